@@ -1,0 +1,71 @@
+// The dyncontact executable: reads the command line and the parameter file, dispatches to the
+// problem's dimension, and turns every failure into one clear message and a non-zero exit code.
+#include <dyncontact/bar_model.h>
+#include <dyncontact/command_line.h>
+#include <dyncontact/parameters.h>
+#include <dyncontact/simulation.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <iostream>
+#include <sstream>
+
+int main(int argc, char** argv)
+{
+  using namespace dyncontact;
+  Utilities::MPI::MPI_InitFinalize mpi_initialization(argc, argv, 1);
+  try
+  {
+    const CommandLine command_line = CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
+    switch (command_line.action)
+    {
+      case CommandLine::Action::help:
+        std::cout << CommandLine::usage();
+        return 0;
+      case CommandLine::Action::print_parameters:
+        ParameterReader::print_documentation(std::cout);
+        return 0;
+      case CommandLine::Action::validate:
+      {
+        const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+        std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
+        return 0;
+      }
+      case CommandLine::Action::run:
+      {
+        const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+        const RunParameters&  parameters = reader.parameters();
+        prepare_output_directory(parameters.output.directory);
+        reader.write_records(parameters.output.directory);
+        Simulation<1> simulation(parameters,
+                                 std::make_unique<BarModel>(parameters.geometry, parameters.contact),
+                                 std::cout);
+        simulation.run();
+        return 0;
+      }
+    }
+  }
+  catch (const InputError& error)
+  {
+    std::cerr << "dyncontact: error: " << error.what() << std::endl;
+    return 2;
+  }
+  catch (const SolverFailure& error)
+  {
+    std::cerr << "dyncontact: solve failed: " << error.what() << std::endl;
+    return 3;
+  }
+  catch (const dealii::ExceptionBase& error)
+  {
+    std::ostringstream message;
+    error.print_info(message);
+    std::cerr << "dyncontact: internal error: " << message.str() << std::endl;
+    return 4;
+  }
+  catch (const std::exception& error)
+  {
+    std::cerr << "dyncontact: internal error: " << error.what() << std::endl;
+    return 4;
+  }
+  return 0;
+}

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <dyncontact/contact_constraints.h>
+#include <dyncontact/elastic_bodies.h>
+#include <dyncontact/global.h>
+#include <dyncontact/parameters.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+namespace dyncontact
+{
+/**
+ * Solves one implicit time step with contact: find u and the multipliers such that
+ *   c M (u - u~) + Q(u) - G^T lambda = 0,  and the constraint rows of ContactConstraints,
+ * with c = 1/(beta dt^2), by Newton's method on the symmetric saddle-point system
+ * [K_eff, -G^T; -G, -D], factorized by the Trilinos direct solver Amesos KLU. The active set is
+ * updated after every linear solve (a semi-smooth Newton); the step has converged when the
+ * residual is below the tolerance times the size of the force terms, the active constraints hold
+ * to the gap tolerance, and the last update left the active set unchanged.
+ *
+ * It owns the matrix and its fixed sparsity pattern; it does not know Newmark's update formulas.
+ */
+template <int dim>
+class ContactNewtonSolver
+{
+public:
+  /** What one step's solve did, for histories and logs. */
+  struct Report
+  {
+    unsigned int linear_solves;
+    double       residual_norm;
+  };
+
+  /**
+   * `length_scale` (e.g. the smallest element size) turns the relative tolerance into the gap
+   * tolerance used for activation and constraint convergence.
+   */
+  ContactNewtonSolver(const DoFHandler<dim>&     dof_handler,
+                      const ElasticBodies<dim>&  bodies,
+                      ContactConstraints<dim>&   contact,
+                      const Vector<double>&      lumped_mass,
+                      const NewtonParameters&    parameters,
+                      double                     length_scale);
+
+  /**
+   * Solves the step. `displacement` holds the initial guess (the predictor) on entry and the
+   * converged u_{n+1} on exit; the contact multipliers and active set are updated in place.
+   * Throws SolverFailure if Newton does not converge within the iteration limit or the linear
+   * solver fails.
+   */
+  Report solve(const Vector<double>& predictor, double inertia_factor, Vector<double>& displacement);
+
+  /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */
+  const Vector<double>& internal_force() const { return internal_force_values; }
+
+private:
+  const DoFHandler<dim>&         dof_handler;
+  const ElasticBodies<dim>&      bodies;
+  ContactConstraints<dim>&       contact;
+  const Vector<double>&          lumped_mass;
+  const NewtonParameters         parameters;
+  const double                   gap_tolerance;
+  SparsityPattern                sparsity;
+  TrilinosWrappers::SparseMatrix matrix;
+  Vector<double>                 internal_force_values;
+};
+} // namespace dyncontact

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <dyncontact/global.h>
+#include <dyncontact/parameters.h>
+
+#include <deal.II/lac/vector.h>
+
+namespace dyncontact
+{
+/**
+ * The Newmark (beta, gamma) family, method.md eqs. (11)-(12), written displacement-first: the
+ * predictor u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, then a_{n+1} = (u_{n+1} - u~)/(beta dt^2) and
+ * v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}). It also knows the algorithmic energy
+ * weight. The modified scheme's contact correction is not here but in ContactConstraints, which
+ * calls back into this class for the coefficients; assembly and solves are not here either.
+ */
+class Newmark
+{
+public:
+  /** Needs beta > 0, which TimeIntegrationParameters ensures. */
+  explicit Newmark(const TimeIntegrationParameters& parameters);
+
+  double beta() const { return beta_value; }
+  double gamma() const { return gamma_value; }
+  double time_step() const { return dt; }
+  NewmarkScheme scheme() const { return scheme_value; }
+
+  /** 1 / (beta dt^2): multiplies M (u_{n+1} - u~) in the equation of motion. */
+  double inertia_factor() const { return 1. / (beta_value * dt * dt); }
+
+  /** The predictor u~ from the state at t_n. */
+  void predict(const Vector<double>& u_n,
+               const Vector<double>& v_n,
+               const Vector<double>& a_n,
+               Vector<double>&       predictor) const;
+
+  /** a_{n+1} and v_{n+1} from the converged u_{n+1} (classical update, every DoF). */
+  void update_rates(const Vector<double>& u_new,
+                    const Vector<double>& predictor,
+                    const Vector<double>& v_n,
+                    const Vector<double>& a_n,
+                    Vector<double>&       v_new,
+                    Vector<double>&       a_new) const;
+
+  /**
+   * 1/2 v.Mv + W(u) + (beta - 1/4) dt^2/2 a.Ma: conserved exactly by gamma = 1/2 Newmark for a
+   * linear free system (the plain energy is not when beta != 1/4).
+   */
+  double algorithmic_energy(double kinetic_energy, double strain_energy, double acceleration_energy) const;
+
+private:
+  NewmarkScheme scheme_value;
+  double        beta_value;
+  double        gamma_value;
+  double        dt;
+};
+} // namespace dyncontact

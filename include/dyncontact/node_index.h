@@ -1,0 +1,42 @@
+#pragma once
+
+#include <dyncontact/global.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+
+#include <array>
+#include <vector>
+
+namespace dyncontact
+{
+/** One node of the vector-valued finite element field: its body, position and DoF per component. */
+template <int dim>
+struct Node
+{
+  types::material_id                           body;
+  Point<dim>                                   position;
+  std::array<types::global_dof_index, dim> dofs;
+};
+
+/**
+ * Every node of the mesh (vertices, and for Q2 also mid-side and centre nodes), found through the
+ * element's support points as in step-42, so that it works for any Lagrange degree. Nodes are
+ * ordered by body, then by position. It does not own any solution data.
+ */
+template <int dim>
+class NodeIndex
+{
+public:
+  NodeIndex(const DoFHandler<dim>& dof_handler, const Mapping<dim>& mapping);
+
+  const std::vector<Node<dim>>& nodes() const { return all_nodes; }
+
+  /** The node of `body` nearest to `point` (reference configuration). */
+  const Node<dim>& closest_node(types::material_id body, const Point<dim>& point) const;
+
+private:
+  std::vector<Node<dim>> all_nodes;
+};
+} // namespace dyncontact

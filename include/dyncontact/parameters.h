@@ -1,0 +1,149 @@
+#pragma once
+
+#include <dyncontact/global.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace dyncontact
+{
+/** Which Newmark variant advances velocities and accelerations (method.md sections 2 and 4). */
+enum class NewmarkScheme
+{
+  classical, ///< plain Newmark; contact constrains displacements only
+  modified   ///< Taylor & Papadopoulos: also [[v]].n = 0 and [[a]].n = 0 on active pairs
+};
+
+/** How the contact constraint g >= 0 is enforced. */
+enum class ContactFormulation
+{
+  lagrange_multiplier, ///< exact enforcement, one multiplier unknown per candidate pair
+  penalty              ///< force eps <-g> along the normal
+};
+
+/** Newmark parameters and the time window of a run. Subsection `Time integration`. */
+struct TimeIntegrationParameters
+{
+  NewmarkScheme scheme;
+  double        beta;
+  double        gamma;
+  double        time_step;
+  double        end_time;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void        parse_parameters(ParameterHandler& prm);
+};
+
+/** Contact enforcement. Subsection `Contact`. */
+struct ContactParameters
+{
+  ContactFormulation formulation;
+  /// penalty stiffness of a pair = this factor times E A / h of the stiffer side (dimensionless)
+  double penalty_factor;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void        parse_parameters(ParameterHandler& prm);
+};
+
+/** Convergence control of the per-step Newton / active-set loop. Subsection `Newton`. */
+struct NewtonParameters
+{
+  unsigned int max_iterations;
+  double       residual_tolerance;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void        parse_parameters(ParameterHandler& prm);
+};
+
+/** One straight linear elastic bar on the x axis. Subsection `Geometry/Bar <b>`. */
+struct BarParameters
+{
+  double       left_end;
+  double       length;
+  unsigned int n_elements;
+  double       youngs_modulus;
+  double       density;
+  double       area;
+  double       initial_velocity;
+
+  double right_end() const { return left_end + length; }
+  double wave_speed() const;
+  double element_length() const { return length / n_elements; }
+
+  static void declare_parameters(ParameterHandler& prm);
+  /// `section` is the subsection path used in error messages, e.g. "Geometry/Bar 2".
+  void parse_parameters(ParameterHandler& prm, const std::string& section);
+};
+
+/**
+ * The bodies of a bar problem: bars in prm order (body b = bar b) and an optional rigid wall at
+ * x = wall position that faces -x (all bars lie to its left). Subsection `Geometry`.
+ */
+struct GeometryParameters
+{
+  std::vector<BarParameters> bars;
+  bool                       wall_enabled;
+  double                     wall_position;
+
+  static void declare_parameters(ParameterHandler& prm, unsigned int n_bars);
+  void        parse_parameters(ParameterHandler& prm);
+};
+
+/** What a run writes and where. Subsection `Output`. */
+struct OutputParameters
+{
+  std::string         directory;
+  std::vector<double> profile_times;
+  unsigned int        vtu_interval;
+  bool                write_exact_solution;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void        parse_parameters(ParameterHandler& prm);
+};
+
+/** Every setting of one run, grouped by prm subsection. */
+struct RunParameters
+{
+  TimeIntegrationParameters time;
+  ContactParameters         contact;
+  NewtonParameters          newton;
+  GeometryParameters        geometry;
+  OutputParameters          output;
+};
+
+/**
+ * Reads a parameter file, applies `Section/entry=value` overrides, checks every value and keeps
+ * the ParameterHandler so that the run can record what it used. Every problem becomes an
+ * InputError naming the file, the entry and the allowed range. It does not create any output.
+ */
+class ParameterReader
+{
+public:
+  /**
+   * Parses `filename` and then the overrides in order (each "Section/Subsection/entry=value").
+   * Throws InputError on an unreadable file, an unknown entry, a value out of range, or
+   * inconsistent geometry.
+   */
+  ParameterReader(const std::string& filename, const std::vector<std::string>& overrides);
+
+  const RunParameters& parameters() const { return run_parameters; }
+
+  /**
+   * Writes `original.prm` (the input as given, followed by the overrides as comments) and
+   * `parameters.prm` (every entry with the value in effect) into `directory`.
+   */
+  void write_records(const std::string& directory) const;
+
+  /** Prints every entry with its documentation, default and allowed values. */
+  static void print_documentation(std::ostream& out);
+
+private:
+  std::string              input_filename;
+  std::string              input_text;
+  std::vector<std::string> overrides;
+  ParameterHandler         prm;
+  RunParameters            run_parameters;
+};
+} // namespace dyncontact

@@ -1,0 +1,85 @@
+#pragma once
+
+#include <dyncontact/contact_constraints.h>
+#include <dyncontact/contact_newton_solver.h>
+#include <dyncontact/elastic_bodies.h>
+#include <dyncontact/field_output.h>
+#include <dyncontact/global.h>
+#include <dyncontact/history.h>
+#include <dyncontact/newmark.h>
+#include <dyncontact/node_index.h>
+#include <dyncontact/parameters.h>
+#include <dyncontact/problem_model.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <map>
+#include <memory>
+#include <ostream>
+
+namespace dyncontact
+{
+/**
+ * One run of an elastodynamic contact problem, the same code for every dimension: sets up the
+ * mesh and DoFs of the ProblemModel, the lumped mass, the contact layer and the Newton solver, then
+ * advances Newmark (classical or modified) step by step, recording the history (history.csv), the
+ * reference solution, profiles and VTU fields in Output/directory. Like the tutorial programs it
+ * has setup / do_time_step / output phases; the physics lives in the classes it composes.
+ */
+template <int dim>
+class Simulation
+{
+public:
+  /** `log` receives the progress report (std::cout for the executable). */
+  Simulation(const RunParameters& parameters, std::unique_ptr<ProblemModel<dim>> model, std::ostream& log);
+
+  /**
+   * Runs from t = 0 to the end time. Output/directory must exist. Throws SolverFailure if a step
+   * cannot be solved; everything recorded up to that step is already on disk.
+   */
+  void run();
+
+  /** The recorded history, one row per step including t = 0. */
+  const History& history() const { return step_history; }
+
+  /** Lumped nodal masses per DoF. */
+  const Vector<double>& lumped_mass() const { return mass; }
+
+  /** The node whose motion is recorded as u_tip_<b>, v_tip_<b>, a_tip_<b>, per body. */
+  const std::vector<Node<dim>>& monitor_nodes() const { return monitors; }
+
+private:
+  void                     setup();
+  void                     warn_about_penalty_stability() const;
+  void                     set_initial_conditions();
+  unsigned int             do_time_step();
+  void                     record_step(unsigned int step, unsigned int linear_solves);
+  std::vector<std::string> history_columns() const;
+
+  const RunParameters                       parameters;
+  const std::unique_ptr<ProblemModel<dim>>  model;
+  std::ostream&                             log;
+  const Newmark                             newmark;
+  Triangulation<dim>                        triangulation;
+  const FESystem<dim>                       fe;
+  const MappingQ<dim>                       mapping;
+  DoFHandler<dim>                           dof_handler;
+  std::unique_ptr<NodeIndex<dim>>           nodes;
+  std::unique_ptr<Kinematics<dim>>          kinematics;
+  std::unique_ptr<ElasticBodies<dim>>       bodies;
+  Vector<double>                            mass;
+  std::unique_ptr<ContactConstraints<dim>>  contact;
+  std::unique_ptr<ContactNewtonSolver<dim>> solver;
+  std::vector<Node<dim>>                    monitors;
+  std::unique_ptr<FieldOutput<dim>>         field_output;
+  std::map<unsigned int, double>            profile_steps; ///< step -> requested profile time
+  unsigned int                              n_steps;
+  double                                    time;
+  Vector<double>                            displacement, velocity, acceleration;
+  History                                   step_history;
+};
+} // namespace dyncontact

@@ -1,0 +1,95 @@
+#include <dyncontact/command_line.h>
+
+#include <filesystem>
+#include <fstream>
+
+namespace dyncontact
+{
+CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
+{
+  CommandLine command_line;
+  bool        action_given = false;
+  const auto  set_action   = [&](const Action action) {
+    if (action_given && command_line.action != action)
+      throw InputError("conflicting options; see --help.");
+    command_line.action = action;
+    action_given        = true;
+  };
+  const auto value_of = [&](unsigned int& i) -> const std::string& {
+    if (i + 1 >= arguments.size())
+      throw InputError("option " + arguments[i] + " needs a value; see --help.");
+    return arguments[++i];
+  };
+
+  for (unsigned int i = 0; i < arguments.size(); ++i)
+  {
+    const std::string& argument = arguments[i];
+    if (argument == "--help" || argument == "-h")
+      set_action(Action::help);
+    else if (argument == "--print-parameters")
+      set_action(Action::print_parameters);
+    else if (argument == "--validate")
+    {
+      set_action(Action::validate);
+      command_line.parameter_file = value_of(i);
+    }
+    else if (argument == "--set")
+      command_line.overrides.push_back(value_of(i));
+    else if (argument == "--output")
+      command_line.overrides.push_back("Output/directory=" + value_of(i));
+    else if (!argument.empty() && argument[0] == '-')
+      throw InputError("unknown option '" + argument + "'; see --help.");
+    else if (command_line.parameter_file.empty())
+    {
+      if (!action_given)
+        set_action(Action::run);
+      command_line.parameter_file = argument;
+    }
+    else
+      throw InputError("more than one parameter file given ('" + command_line.parameter_file +
+                       "' and '" + argument + "').");
+  }
+  if (!action_given)
+    command_line.action = Action::help;
+  if ((command_line.action == Action::run || command_line.action == Action::validate) &&
+      command_line.parameter_file.empty())
+    throw InputError("no parameter file given; see --help.");
+  return command_line;
+}
+
+std::string CommandLine::usage()
+{
+  return "dyncontact: implicit dynamics of elastic bodies in contact (Taylor & Papadopoulos 1993).\n"
+         "\n"
+         "Usage:\n"
+         "  dyncontact FILE.prm [--set \"Section/entry=value\"]... [--output DIR]\n"
+         "      run the problem; every --set overrides one entry of FILE.prm (repeatable),\n"
+         "      --output DIR is short for --set \"Output/directory=DIR\".\n"
+         "  dyncontact --validate FILE.prm [--set ...]\n"
+         "      read and check the parameters, run nothing.\n"
+         "  dyncontact --print-parameters\n"
+         "      print every entry with its documentation, default and allowed values.\n"
+         "  dyncontact --help\n"
+         "\n"
+         "A run writes into Output/directory: history.csv (one row per step), exact.csv (the exact\n"
+         "solution, bars), profile_t<T>.csv, solution-*.vtu with solution.pvd, original.prm (the\n"
+         "input as given) and parameters.prm (every value in effect).\n";
+}
+
+void prepare_output_directory(const std::string& directory)
+{
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if (error || !std::filesystem::is_directory(directory))
+    throw InputError("Output/directory = '" + directory + "' cannot be created" +
+                     (error ? " (" + error.message() + ")" : std::string()) +
+                     "; give a writable directory.");
+  const std::string probe = directory + "/.dyncontact-write-test";
+  {
+    std::ofstream file(probe);
+    if (!(file << "ok"))
+      throw InputError("Output/directory = '" + directory + "' is not writable; give a writable directory.");
+  }
+  std::filesystem::remove(probe, error);
+}
+} // namespace dyncontact

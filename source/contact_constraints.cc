@@ -1,0 +1,230 @@
+#include <dyncontact/contact_constraints.h>
+
+#include <algorithm>
+
+namespace dyncontact
+{
+template <int dim>
+ContactConstraints<dim>::ContactConstraints(std::vector<ContactPair<dim>> pairs,
+                                            const ContactFormulation      formulation)
+  : pairs(std::move(pairs))
+  , formulation(formulation)
+  , active(this->pairs.size(), false)
+  , multiplier_values(this->pairs.size())
+{
+}
+
+template <int dim>
+unsigned int ContactConstraints<dim>::n_active() const
+{
+  return std::count(active.begin(), active.end(), true);
+}
+
+template <int dim>
+double ContactConstraints<dim>::normal_component(const Node<dim>&      node,
+                                                 const Tensor<1, dim>& normal,
+                                                 const Vector<double>& field) const
+{
+  double component = 0.;
+  for (unsigned int d = 0; d < dim; ++d)
+    component += normal[d] * field[node.dofs[d]];
+  return component;
+}
+
+template <int dim>
+double ContactConstraints<dim>::gap(const unsigned int pair_index, const Vector<double>& displacement) const
+{
+  const ContactPair<dim>& pair = pairs[pair_index];
+  const double            x_a  = pair.normal * pair.node_a.position + normal_component(pair.node_a, pair.normal, displacement);
+  const double            x_b  = pair.against_wall() ?
+                                   pair.normal * pair.wall_point :
+                                   pair.normal * pair.node_b->position +
+                                     normal_component(*pair.node_b, pair.normal, displacement);
+  return x_b - x_a;
+}
+
+template <int dim>
+void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern&       sparsity,
+                                              const types::global_dof_index n_dofs) const
+{
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    const types::global_dof_index row = n_dofs + k;
+    sparsity.add(row, row);
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      sparsity.add(row, pairs[k].node_a.dofs[d]);
+      sparsity.add(pairs[k].node_a.dofs[d], row);
+      if (!pairs[k].against_wall())
+      {
+        sparsity.add(row, pairs[k].node_b->dofs[d]);
+        sparsity.add(pairs[k].node_b->dofs[d], row);
+      }
+    }
+  }
+}
+
+template <int dim>
+void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
+{
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      // G^T lambda with G = dg/du: -n on body A, +n on body B.
+      force[pairs[k].node_a.dofs[d]] -= pairs[k].normal[d] * multiplier_values[k];
+      if (!pairs[k].against_wall())
+        force[pairs[k].node_b->dofs[d]] += pairs[k].normal[d] * multiplier_values[k];
+    }
+}
+
+template <int dim>
+void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>&           displacement,
+                                                       const double                    inactive_diagonal,
+                                                       TrilinosWrappers::SparseMatrix& matrix,
+                                                       Vector<double>& constraint_residual) const
+{
+  const types::global_dof_index n_dofs = displacement.size();
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    const types::global_dof_index row = n_dofs + k;
+    if (!active[k])
+    {
+      matrix.add(row, row, inactive_diagonal);
+      constraint_residual[k] = inactive_diagonal * multiplier_values[k];
+      continue;
+    }
+    // Rows of the symmetric system [K_eff, -G^T; -G, -D]: -G = +n on body A, -n on body B.
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      const double n_d = pairs[k].normal[d];
+      matrix.add(row, pairs[k].node_a.dofs[d], n_d);
+      matrix.add(pairs[k].node_a.dofs[d], row, n_d);
+      if (!pairs[k].against_wall())
+      {
+        matrix.add(row, pairs[k].node_b->dofs[d], -n_d);
+        matrix.add(pairs[k].node_b->dofs[d], row, -n_d);
+      }
+    }
+    constraint_residual[k] = -gap(k, displacement);
+    if (formulation == ContactFormulation::penalty)
+    {
+      matrix.add(row, row, -1. / pairs[k].penalty_stiffness);
+      constraint_residual[k] -= multiplier_values[k] / pairs[k].penalty_stiffness;
+    }
+  }
+}
+
+template <int dim>
+void ContactConstraints<dim>::add_multiplier_increment(const Vector<double>& increment)
+{
+  multiplier_values += increment;
+}
+
+template <int dim>
+bool ContactConstraints<dim>::update_active_set(const Vector<double>& displacement,
+                                                const double          gap_tolerance,
+                                                const double          force_tolerance)
+{
+  bool changed = false;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (!active[k] && gap(k, displacement) < -gap_tolerance)
+    {
+      active[k] = true;
+      changed   = true;
+    }
+    else if (active[k] && multiplier_values[k] < -force_tolerance)
+    {
+      active[k]            = false;
+      multiplier_values[k] = 0.;
+      changed              = true;
+    }
+  return changed;
+}
+
+template <int dim>
+void ContactConstraints<dim>::apply_rate_correction(const Newmark&        newmark,
+                                                    const Vector<double>& lumped_mass,
+                                                    const Vector<double>& u_old,
+                                                    const Vector<double>& v_old,
+                                                    const Vector<double>& a_old,
+                                                    const Vector<double>& u_new,
+                                                    Vector<double>&       v_new,
+                                                    Vector<double>&       a_new) const
+{
+  const double dt    = newmark.time_step();
+  const double beta  = newmark.beta();
+  const double gamma = newmark.gamma();
+
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    if (!active[k])
+      continue;
+    const ContactPair<dim>& pair   = pairs[k];
+    const Tensor<1, dim>&   normal = pair.normal;
+    // [[f]] = (f_B - f_A) . n; a wall is at rest, so only its position enters.
+    const auto jump = [&](const Vector<double>& field) {
+      const double side_b = pair.against_wall() ? 0. : normal_component(*pair.node_b, normal, field);
+      return side_b - normal_component(pair.node_a, normal, field);
+    };
+    const double position_jump = gap(k, u_old);
+    const double mass_a        = lumped_mass[pair.node_a.dofs[0]];
+    const double inverse_weight_sum =
+      1. / mass_a + (pair.against_wall() ? 0. : 1. / lumped_mass[pair.node_b->dofs[0]]);
+
+    // Eqs. (21) and (22).
+    const double lambda_a =
+      (position_jump + dt * jump(v_old) + dt * dt * (0.5 - beta) * jump(a_old)) / inverse_weight_sum;
+    const double lambda_v = (jump(v_old) + dt * (1. - gamma) * jump(a_old)) / inverse_weight_sum;
+
+    // Recovery of the normal rates of side a = 1 (A, sign -1) and a = 2 (B, sign +1).
+    const auto correct_side = [&](const Node<dim>& node, const double sign) {
+      const double mass = lumped_mass[node.dofs[0]];
+      const double increment =
+        normal_component(node, normal, u_new) - normal_component(node, normal, u_old) -
+        dt * normal_component(node, normal, v_old) - dt * dt * (0.5 - beta) * normal_component(node, normal, a_old);
+      const double a_normal = (increment + sign * lambda_a / mass) * newmark.inertia_factor();
+      const double v_normal = normal_component(node, normal, v_old) +
+                              dt * (1. - gamma) * normal_component(node, normal, a_old) +
+                              dt * gamma * a_normal - sign * lambda_v / mass;
+      const double a_shift = a_normal - normal_component(node, normal, a_new);
+      const double v_shift = v_normal - normal_component(node, normal, v_new);
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        a_new[node.dofs[d]] += a_shift * normal[d];
+        v_new[node.dofs[d]] += v_shift * normal[d];
+      }
+    };
+    correct_side(pair.node_a, -1.);
+    if (!pair.against_wall())
+      correct_side(*pair.node_b, +1.);
+  }
+}
+
+template <int dim>
+double ContactConstraints<dim>::recovered_contact_force(const Vector<double>& lumped_mass,
+                                                        const Vector<double>& acceleration,
+                                                        const Vector<double>& internal_force) const
+{
+  double force = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        const types::global_dof_index dof = pairs[k].node_a.dofs[d];
+        force -= pairs[k].normal[d] * (lumped_mass[dof] * acceleration[dof] + internal_force[dof]);
+      }
+  return force;
+}
+
+template <int dim>
+double ContactConstraints<dim>::total_multiplier() const
+{
+  double total = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      total += multiplier_values[k];
+  return total;
+}
+
+template class ContactConstraints<1>;
+} // namespace dyncontact

@@ -1,0 +1,406 @@
+#include <dyncontact/parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace dyncontact
+{
+namespace
+{
+/** The text deal.II attaches to one of its exceptions, without file/line decoration. */
+std::string exception_text(const ExceptionBase& exception)
+{
+  std::ostringstream text;
+  exception.print_info(text);
+  std::string message = text.str();
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
+    message.pop_back();
+  while (!message.empty() && (message.front() == ' ' || message.front() == '\n'))
+    message.erase(message.begin());
+  return message;
+}
+
+/** Reads a double that must be strictly positive, naming `section/entry` if it is not. */
+double get_positive(ParameterHandler& prm, const std::string& entry, const std::string& section)
+{
+  const double value = prm.get_double(entry);
+  if (!(value > 0.))
+    throw InputError(section + "/" + entry + " = " + prm.get(entry) +
+                     " is not allowed: it must be > 0.");
+  return value;
+}
+
+/** Splits "A/B/entry=value" into subsection path, entry and value. */
+struct Override
+{
+  std::vector<std::string> subsections;
+  std::string              entry;
+  std::string              value;
+};
+
+Override split_override(const std::string& text)
+{
+  const auto equal_sign = text.find('=');
+  if (equal_sign == std::string::npos || equal_sign == 0)
+    throw InputError("--set '" + text + "': expected \"Section/entry=value\".");
+  Override result;
+  result.value                = Utilities::trim(text.substr(equal_sign + 1));
+  std::vector<std::string> path = Utilities::split_string_list(text.substr(0, equal_sign), '/');
+  result.entry                = path.back();
+  path.pop_back();
+  result.subsections = path;
+  return result;
+}
+
+/**
+ * Applies one override. With `ignore_unknown`, an entry that is not declared is skipped (used by
+ * the first parsing pass, which only knows the number of bars).
+ */
+void apply_override(ParameterHandler& prm, const std::string& text, const bool ignore_unknown)
+{
+  const Override override_entry = split_override(text);
+  for (const auto& subsection : override_entry.subsections)
+    prm.enter_subsection(subsection);
+  try
+  {
+    prm.set(override_entry.entry, override_entry.value);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    for (unsigned int i = 0; i < override_entry.subsections.size(); ++i)
+      prm.leave_subsection();
+    if (ignore_unknown)
+      return;
+    throw InputError("--set '" + text + "': " + exception_text(exception));
+  }
+  for (unsigned int i = 0; i < override_entry.subsections.size(); ++i)
+    prm.leave_subsection();
+}
+
+std::string bar_section(const unsigned int bar) { return "Bar " + std::to_string(bar + 1); }
+
+/** Declares everything for a problem with `n_bars` bars. */
+void declare_all(ParameterHandler& prm, const unsigned int n_bars)
+{
+  TimeIntegrationParameters::declare_parameters(prm);
+  ContactParameters::declare_parameters(prm);
+  NewtonParameters::declare_parameters(prm);
+  GeometryParameters::declare_parameters(prm, n_bars);
+  OutputParameters::declare_parameters(prm);
+}
+
+/** Parses `filename` into `prm`, turning deal.II's exceptions into InputError. */
+void parse_file(ParameterHandler& prm, const std::string& filename, const bool skip_undefined)
+{
+  try
+  {
+    prm.parse_input(filename, "", skip_undefined);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    throw InputError("parameter file '" + filename + "': " + exception_text(exception));
+  }
+}
+} // namespace
+
+void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Time integration");
+  prm.declare_entry("scheme",
+                    "modified",
+                    Patterns::Selection("classical|modified"),
+                    "Newmark variant. classical: contact constrains displacements only. modified: "
+                    "Taylor & Papadopoulos (1993), normal velocity and acceleration of every "
+                    "active contact pair are made continuous after each step (method.md 4).");
+  prm.declare_entry("beta",
+                    "0.25",
+                    Patterns::Double(0., 0.5),
+                    "Newmark beta [-], 0 < beta <= 0.5. Unconditionally stable when "
+                    "2 beta >= gamma; beta = 0.25 is the trapezoidal rule. beta = 0 (explicit "
+                    "central difference) is rejected: u_{n+1} would not depend on the contact "
+                    "force, so no constraint could act on it.");
+  prm.declare_entry("gamma",
+                    "0.5",
+                    Patterns::Double(0.5, 1.),
+                    "Newmark gamma [-], 0.5 <= gamma <= 1. Second order only for gamma = 0.5; "
+                    "gamma > 0.5 adds numerical dissipation.");
+  prm.declare_entry("time step",
+                    "0.1",
+                    Patterns::Double(0.),
+                    "Time step dt [time], > 0. The Courant number c dt / h is printed at start.");
+  prm.declare_entry("end time", "30", Patterns::Double(0.), "End of the run [time], > 0.");
+  prm.leave_subsection();
+}
+
+void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Time integration");
+  scheme    = prm.get("scheme") == "modified" ? NewmarkScheme::modified : NewmarkScheme::classical;
+  beta      = prm.get_double("beta");
+  gamma     = prm.get_double("gamma");
+  if (!(beta > 0.))
+    throw InputError("Time integration/beta = 0 is not supported: with beta = 0 the displacement "
+                     "u_{n+1} is explicit and the contact constraint cannot act on it. Use "
+                     "0 < beta <= 0.5 (the paper's nearly explicit choice is 0.001).");
+  time_step = get_positive(prm, "time step", "Time integration");
+  end_time  = get_positive(prm, "end time", "Time integration");
+  prm.leave_subsection();
+}
+
+void ContactParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Contact");
+  prm.declare_entry("formulation",
+                    "lagrange multiplier",
+                    Patterns::Selection("lagrange multiplier|penalty"),
+                    "Enforcement of the non-penetration condition g >= 0. lagrange multiplier: "
+                    "exact, one multiplier unknown per candidate pair (saddle-point solve). "
+                    "penalty: force eps <-g> along the normal (allows small penetration).");
+  prm.declare_entry("penalty factor",
+                    "100",
+                    Patterns::Double(0.),
+                    "Penalty only: stiffness eps of a pair [force/length] = this factor [-] times "
+                    "E A / h of the stiffer side (h: element length at the contact node), > 0. "
+                    "With beta < gamma/2 the scheme is only conditionally stable and a large "
+                    "penalty needs a small time step (a warning says so).");
+  prm.leave_subsection();
+}
+
+void ContactParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Contact");
+  formulation    = prm.get("formulation") == "penalty" ? ContactFormulation::penalty :
+                                                         ContactFormulation::lagrange_multiplier;
+  penalty_factor = get_positive(prm, "penalty factor", "Contact");
+  prm.leave_subsection();
+}
+
+void NewtonParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Newton");
+  prm.declare_entry("maximum iterations",
+                    "25",
+                    Patterns::Integer(1, 1000),
+                    "Maximum number of linear solves per time step, including the re-solves "
+                    "after active-set changes [-], 1..1000. Exceeding it stops the run with a "
+                    "message; the output written so far is kept.");
+  prm.declare_entry("residual tolerance",
+                    "1e-10",
+                    Patterns::Double(1e-16, 1e-2),
+                    "Newton converges when the residual norm is below this fraction of the sum of "
+                    "the norms of the force terms (inertia, internal, contact) [-], 1e-16..1e-2.");
+  prm.leave_subsection();
+}
+
+void NewtonParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Newton");
+  max_iterations     = prm.get_integer("maximum iterations");
+  residual_tolerance = prm.get_double("residual tolerance");
+  prm.leave_subsection();
+}
+
+double BarParameters::wave_speed() const { return std::sqrt(youngs_modulus / density); }
+
+void BarParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("left end", "0", Patterns::Double(), "x of the bar's left end at t = 0 [length].");
+  prm.declare_entry("length", "10", Patterns::Double(0.), "Bar length L [length], > 0.");
+  prm.declare_entry("number of elements",
+                    "100",
+                    Patterns::Integer(1, 10000000),
+                    "Number of equal 2-node linear elements along the bar [-], >= 1.");
+  prm.declare_entry("Young's modulus", "1", Patterns::Double(0.), "E [force/length^2], > 0.");
+  prm.declare_entry("density", "1", Patterns::Double(0.), "rho [mass/length^3], > 0.");
+  prm.declare_entry("cross-section area", "1", Patterns::Double(0.), "A [length^2], > 0.");
+  prm.declare_entry("initial velocity",
+                    "0",
+                    Patterns::Double(),
+                    "Uniform velocity along +x at t = 0 [length/time]; the bar starts "
+                    "stress-free.");
+}
+
+void BarParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+{
+  left_end         = prm.get_double("left end");
+  length           = get_positive(prm, "length", section);
+  n_elements       = prm.get_integer("number of elements");
+  youngs_modulus   = get_positive(prm, "Young's modulus", section);
+  density          = get_positive(prm, "density", section);
+  area             = get_positive(prm, "cross-section area", section);
+  initial_velocity = prm.get_double("initial velocity");
+}
+
+void GeometryParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_bars)
+{
+  prm.enter_subsection("Geometry");
+  prm.declare_entry("number of bars",
+                    "1",
+                    Patterns::Integer(1, 100),
+                    "Number of bars [-], 1..100; bar b is described in subsection 'Bar b' and is "
+                    "body b of the outputs. Contact is checked between facing ends of bars "
+                    "that are neighbours along x, and between the rightmost bar and the wall.");
+  for (unsigned int bar = 0; bar < n_bars; ++bar)
+  {
+    prm.enter_subsection(bar_section(bar));
+    BarParameters::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+  prm.enter_subsection("Rigid wall");
+  prm.declare_entry("enabled", "false", Patterns::Bool(), "Whether a fixed rigid wall exists.");
+  prm.declare_entry("position",
+                    "0",
+                    Patterns::Double(),
+                    "x of the wall [length]. The wall faces -x: every bar must lie to its left "
+                    "(touching is allowed).");
+  prm.leave_subsection();
+  prm.leave_subsection();
+}
+
+void GeometryParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Geometry");
+  const unsigned int n_bars = prm.get_integer("number of bars");
+  bars.resize(n_bars);
+  for (unsigned int bar = 0; bar < n_bars; ++bar)
+  {
+    prm.enter_subsection(bar_section(bar));
+    bars[bar].parse_parameters(prm, "Geometry/" + bar_section(bar));
+    prm.leave_subsection();
+  }
+  prm.enter_subsection("Rigid wall");
+  wall_enabled  = prm.get_bool("enabled");
+  wall_position = prm.get_double("position");
+  prm.leave_subsection();
+  prm.leave_subsection();
+
+  for (unsigned int a = 0; a < n_bars; ++a)
+    for (unsigned int b = a + 1; b < n_bars; ++b)
+      if (bars[a].left_end < bars[b].right_end() && bars[b].left_end < bars[a].right_end())
+        throw InputError("Geometry: Bar " + std::to_string(a + 1) + " [" +
+                         std::to_string(bars[a].left_end) + ", " +
+                         std::to_string(bars[a].right_end()) + "] and Bar " +
+                         std::to_string(b + 1) + " [" + std::to_string(bars[b].left_end) + ", " +
+                         std::to_string(bars[b].right_end()) +
+                         "] overlap at t = 0; bars may touch but not overlap.");
+  if (wall_enabled)
+    for (unsigned int bar = 0; bar < n_bars; ++bar)
+      if (bars[bar].right_end() > wall_position)
+        throw InputError("Geometry/Rigid wall/position = " + std::to_string(wall_position) +
+                         " lies inside Bar " + std::to_string(bar + 1) + " (right end " +
+                         std::to_string(bars[bar].right_end()) +
+                         "); the wall faces -x, so every bar must lie at x <= position.");
+}
+
+void OutputParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Output");
+  prm.declare_entry("directory",
+                    "output",
+                    Patterns::DirectoryName(),
+                    "Directory for all results of the run (created if missing; relative paths "
+                    "are relative to the working directory).");
+  prm.declare_entry("profile times",
+                    "",
+                    Patterns::List(Patterns::Double(0.)),
+                    "Comma-separated times [time] at which profile_t<time>.csv (body, x, u, v, a "
+                    "of every node) is written, at the time step closest to each.");
+  prm.declare_entry("vtu interval",
+                    "10",
+                    Patterns::Integer(0),
+                    "Write VTU fields (with a PVD record) every this many steps [-]; 0 = never.");
+  prm.declare_entry("write exact solution",
+                    "true",
+                    Patterns::Bool(),
+                    "Write exact.csv, the exact 1D wave solution at every step, beside "
+                    "history.csv.");
+  prm.leave_subsection();
+}
+
+void OutputParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Output");
+  directory = prm.get("directory");
+  if (directory.empty())
+    throw InputError("Output/directory is empty; give a directory name.");
+  profile_times.clear();
+  for (const auto& time : Utilities::split_string_list(prm.get("profile times")))
+    profile_times.push_back(Utilities::string_to_double(time));
+  vtu_interval         = prm.get_integer("vtu interval");
+  write_exact_solution = prm.get_bool("write exact solution");
+  prm.leave_subsection();
+}
+
+ParameterReader::ParameterReader(const std::string&              filename,
+                                 const std::vector<std::string>& overrides)
+  : input_filename(filename)
+  , overrides(overrides)
+{
+  std::ifstream input(filename);
+  if (!input || std::filesystem::is_directory(filename))
+    throw InputError("cannot read parameter file '" + filename + "'.");
+  std::stringstream buffer;
+  buffer << input.rdbuf();
+  input_text = buffer.str();
+
+  // First pass: only the number of bars, which decides what the second pass declares.
+  unsigned int n_bars = 1;
+  {
+    ParameterHandler count_prm;
+    count_prm.enter_subsection("Geometry");
+    count_prm.declare_entry("number of bars", "1", Patterns::Integer(1, 100));
+    count_prm.leave_subsection();
+    parse_file(count_prm, filename, true);
+    for (const auto& text : overrides)
+      apply_override(count_prm, text, true);
+    count_prm.enter_subsection("Geometry");
+    n_bars = count_prm.get_integer("number of bars");
+    count_prm.leave_subsection();
+  }
+
+  declare_all(prm, n_bars);
+  parse_file(prm, filename, false);
+  for (const auto& text : overrides)
+    apply_override(prm, text, false);
+
+  try
+  {
+    run_parameters.time.parse_parameters(prm);
+    run_parameters.contact.parse_parameters(prm);
+    run_parameters.newton.parse_parameters(prm);
+    run_parameters.geometry.parse_parameters(prm);
+    run_parameters.output.parse_parameters(prm);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    throw InputError("parameter file '" + filename + "': " + exception_text(exception));
+  }
+}
+
+void ParameterReader::write_records(const std::string& directory) const
+{
+  std::ofstream original(directory + "/original.prm");
+  original << input_text;
+  if (!overrides.empty())
+  {
+    original << "\n# Overrides given on the command line, applied in this order:\n";
+    for (const auto& text : overrides)
+      original << "#   --set \"" << text << "\"\n";
+  }
+  std::ofstream effective(directory + "/parameters.prm");
+  prm.print_parameters(effective, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+  if (!original || !effective)
+    throw InputError("Output/directory = '" + directory + "': cannot write the parameter records.");
+}
+
+void ParameterReader::print_documentation(std::ostream& out)
+{
+  ParameterHandler prm;
+  declare_all(prm, 2);
+  prm.print_parameters(out, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+}
+} // namespace dyncontact

@@ -1,0 +1,236 @@
+#include <dyncontact/simulation.h>
+
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <cmath>
+#include <iomanip>
+
+namespace dyncontact
+{
+template <int dim>
+Simulation<dim>::Simulation(const RunParameters&               parameters,
+                            std::unique_ptr<ProblemModel<dim>> model,
+                            std::ostream&                      log)
+  : parameters(parameters)
+  , model(std::move(model))
+  , log(log)
+  , newmark(parameters.time)
+  , fe(FE_Q<dim>(this->model->element_degree()), dim)
+  , mapping(this->model->element_degree())
+  , n_steps(0)
+  , time(0.)
+  , step_history(history_columns())
+{
+}
+
+template <int dim>
+std::vector<std::string> Simulation<dim>::history_columns() const
+{
+  std::vector<std::string> columns = {"time",
+                                      "contact_force",
+                                      "contact_multiplier",
+                                      "active_constraints",
+                                      "newton_iterations",
+                                      "kinetic_energy",
+                                      "strain_energy",
+                                      "total_energy",
+                                      "algorithmic_energy"};
+  for (unsigned int b = 1; b <= model->body_materials().size(); ++b)
+    for (const std::string quantity : {"momentum_", "u_tip_", "v_tip_", "a_tip_"})
+      columns.push_back(quantity + std::to_string(b));
+  return columns;
+}
+
+template <int dim>
+void Simulation<dim>::setup()
+{
+  model->create_triangulation(triangulation);
+  dof_handler.reinit(triangulation);
+  dof_handler.distribute_dofs(fe);
+  nodes      = std::make_unique<NodeIndex<dim>>(dof_handler, mapping);
+  kinematics = model->create_kinematics();
+  bodies     = std::make_unique<ElasticBodies<dim>>(dof_handler, mapping, *kinematics, model->body_materials());
+  mass       = bodies->lumped_mass();
+  contact    = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes), parameters.contact.formulation);
+  solver     = std::make_unique<ContactNewtonSolver<dim>>(dof_handler,
+                                                      *bodies,
+                                                      *contact,
+                                                      mass,
+                                                      parameters.newton,
+                                                      GridTools::minimal_cell_diameter(triangulation));
+  monitors   = model->monitor_nodes(*nodes);
+
+  const double dt = parameters.time.time_step;
+  n_steps         = static_cast<unsigned int>(std::ceil(parameters.time.end_time / dt - 1e-9));
+  for (const double profile_time : parameters.output.profile_times)
+    if (profile_time <= n_steps * dt)
+      profile_steps[static_cast<unsigned int>(std::lround(profile_time / dt))] = profile_time;
+
+  log << "dyncontact: " << dof_handler.n_dofs() << " displacement DoFs, " << contact->n_pairs()
+      << " contact candidate(s), " << n_steps << " steps of dt = " << dt << ", "
+      << (newmark.scheme() == NewmarkScheme::modified ? "modified" : "classical")
+      << " Newmark (beta = " << newmark.beta() << ", gamma = " << newmark.gamma() << "), "
+      << (parameters.contact.formulation == ContactFormulation::penalty ? "penalty" : "Lagrange multiplier")
+      << " contact\n";
+  model->print_summary(log, dt);
+  warn_about_penalty_stability();
+}
+
+template <int dim>
+void Simulation<dim>::warn_about_penalty_stability() const
+{
+  // With 2 beta < gamma Newmark is stable only for omega dt <= 1/sqrt(gamma/2 - beta); a penalty
+  // spring between two lumped masses has omega = sqrt(eps / m_reduced).
+  if (parameters.contact.formulation != ContactFormulation::penalty ||
+      2. * newmark.beta() >= newmark.gamma())
+    return;
+  const double limit = 1. / std::sqrt(newmark.gamma() / 2. - newmark.beta());
+  for (const auto& pair : contact->candidate_pairs())
+  {
+    const double mass_a  = mass[pair.node_a.dofs[0]];
+    const double reduced = pair.against_wall() ? mass_a :
+                                                 mass_a * mass[pair.node_b->dofs[0]] /
+                                                   (mass_a + mass[pair.node_b->dofs[0]]);
+    const double omega_dt = newmark.time_step() * std::sqrt(pair.penalty_stiffness / reduced);
+    if (omega_dt > limit)
+    {
+      log << "WARNING: Contact/penalty factor: the penalty spring has omega dt = " << omega_dt
+          << ", above the stability limit " << limit << " of Newmark with beta = " << newmark.beta()
+          << ", gamma = " << newmark.gamma()
+          << "; expect the contact to blow up. Use 2 beta >= gamma, a smaller time step or a "
+             "smaller penalty factor.\n";
+      return;
+    }
+  }
+}
+
+template <int dim>
+void Simulation<dim>::set_initial_conditions()
+{
+  displacement.reinit(dof_handler.n_dofs());
+  velocity.reinit(dof_handler.n_dofs());
+  acceleration.reinit(dof_handler.n_dofs());
+  for (const auto& node : nodes->nodes())
+  {
+    const Tensor<1, dim> v0 = model->initial_velocity(node.body, node.position);
+    for (unsigned int d = 0; d < dim; ++d)
+      velocity[node.dofs[d]] = v0[d];
+  }
+  // Initial acceleration from equilibrium, M a_0 = -Q(u_0) (no loads, no contact at t = 0).
+  Vector<double> internal_force;
+  bodies->assemble_internal_force(displacement, internal_force, nullptr);
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    acceleration[i] = -internal_force[i] / mass[i];
+}
+
+template <int dim>
+unsigned int Simulation<dim>::do_time_step()
+{
+  const Vector<double> old_displacement = displacement, old_velocity = velocity,
+                       old_acceleration = acceleration;
+  Vector<double>       predictor;
+  newmark.predict(old_displacement, old_velocity, old_acceleration, predictor);
+  displacement = predictor;
+  const auto report = solver->solve(predictor, newmark.inertia_factor(), displacement);
+  newmark.update_rates(displacement, predictor, old_velocity, old_acceleration, velocity, acceleration);
+  if (newmark.scheme() == NewmarkScheme::modified)
+    contact->apply_rate_correction(
+      newmark, mass, old_displacement, old_velocity, old_acceleration, displacement, velocity, acceleration);
+  return report.linear_solves;
+}
+
+template <int dim>
+void Simulation<dim>::record_step(const unsigned int step, const unsigned int linear_solves)
+{
+  double kinetic = 0., acceleration_energy = 0.;
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+  {
+    kinetic += 0.5 * mass[i] * velocity[i] * velocity[i];
+    acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
+  }
+  const double strain = bodies->strain_energy(displacement);
+  const double contact_force =
+    step == 0 ? 0. : contact->recovered_contact_force(mass, acceleration, solver->internal_force());
+
+  std::vector<double> row = {time,
+                             contact_force,
+                             contact->total_multiplier(),
+                             static_cast<double>(contact->n_active()),
+                             static_cast<double>(linear_solves),
+                             kinetic,
+                             strain,
+                             kinetic + strain,
+                             newmark.algorithmic_energy(kinetic, strain, acceleration_energy)};
+  const Tensor<1, dim>  direction = model->impact_direction();
+  std::vector<double>   momentum(monitors.size(), 0.);
+  for (const auto& node : nodes->nodes())
+    for (unsigned int d = 0; d < dim; ++d)
+      momentum[node.body] += mass[node.dofs[d]] * direction[d] * velocity[node.dofs[d]];
+  for (unsigned int b = 0; b < monitors.size(); ++b)
+  {
+    double u_tip = 0., v_tip = 0., a_tip = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      u_tip += direction[d] * displacement[monitors[b].dofs[d]];
+      v_tip += direction[d] * velocity[monitors[b].dofs[d]];
+      a_tip += direction[d] * acceleration[monitors[b].dofs[d]];
+    }
+    row.insert(row.end(), {momentum[b], u_tip, v_tip, a_tip});
+  }
+  step_history.add_row(row);
+
+  if (parameters.output.vtu_interval > 0 && step % parameters.output.vtu_interval == 0)
+    field_output->write_fields(step, time, displacement, velocity, acceleration);
+  if (const auto profile = profile_steps.find(step); profile != profile_steps.end())
+    field_output->write_profile(profile->second, nodes->nodes(), displacement, velocity, acceleration);
+}
+
+template <int dim>
+void Simulation<dim>::run()
+{
+  setup();
+  set_initial_conditions();
+  const std::string& directory = parameters.output.directory;
+  field_output = std::make_unique<FieldOutput<dim>>(dof_handler, mapping, directory);
+  step_history.attach_file(directory + "/history.csv");
+  if (parameters.output.write_exact_solution)
+  {
+    std::vector<double> times(n_steps + 1);
+    for (unsigned int step = 0; step <= n_steps; ++step)
+      times[step] = step * parameters.time.time_step;
+    model->write_reference(directory, times, monitors);
+  }
+
+  record_step(0, 0);
+  const unsigned int report_interval = std::max(1u, n_steps / 10);
+  unsigned int       total_solves    = 0;
+  for (unsigned int step = 1; step <= n_steps; ++step)
+  {
+    time                            = step * parameters.time.time_step;
+    const unsigned int active_before = contact->n_active();
+    unsigned int       linear_solves = 0;
+    try
+    {
+      linear_solves = do_time_step();
+    }
+    catch (const SolverFailure& failure)
+    {
+      throw SolverFailure("step " + std::to_string(step) + " (t = " + std::to_string(time) +
+                          "): " + failure.what() + " Results up to t = " +
+                          std::to_string(time - parameters.time.time_step) + " are in " + directory + ".");
+    }
+    total_solves += linear_solves;
+    record_step(step, linear_solves);
+    if (step % report_interval == 0 || contact->n_active() != active_before)
+      log << "  step " << std::setw(6) << step << "  t = " << std::setw(10) << time
+          << "  active pairs " << contact->n_active() << "  linear solves " << linear_solves
+          << "  total energy " << step_history.value(step, "total_energy") << "\n";
+  }
+  log << "dyncontact: done, " << n_steps << " steps, " << total_solves << " linear solves. Results in "
+      << directory << "\n";
+}
+
+template class Simulation<1>;
+} // namespace dyncontact
