@@ -16,33 +16,34 @@ int main(int argc, char** argv)
   Utilities::MPI::MPI_InitFinalize mpi_initialization(argc, argv, 1);
   try
   {
-    const CommandLine command_line = CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
+    const CommandLine command_line =
+        CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
     switch (command_line.action)
     {
-      case CommandLine::Action::help:
-        std::cout << CommandLine::usage();
-        return 0;
-      case CommandLine::Action::print_parameters:
-        ParameterReader::print_documentation(std::cout);
-        return 0;
-      case CommandLine::Action::validate:
-      {
-        const ParameterReader reader(command_line.parameter_file, command_line.overrides);
-        std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
-        return 0;
-      }
-      case CommandLine::Action::run:
-      {
-        const ParameterReader reader(command_line.parameter_file, command_line.overrides);
-        const RunParameters&  parameters = reader.parameters();
-        prepare_output_directory(parameters.output.directory);
-        reader.write_records(parameters.output.directory);
-        Simulation<1> simulation(parameters,
-                                 std::make_unique<BarModel>(parameters.geometry, parameters.contact),
-                                 std::cout);
-        simulation.run();
-        return 0;
-      }
+    case CommandLine::Action::help:
+      std::cout << CommandLine::usage();
+      return 0;
+    case CommandLine::Action::print_parameters:
+      ParameterReader::print_documentation(std::cout);
+      return 0;
+    case CommandLine::Action::validate:
+    {
+      const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+      std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
+      return 0;
+    }
+    case CommandLine::Action::run:
+    {
+      const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+      const RunParameters& parameters = reader.parameters();
+      prepare_output_directory(parameters.output.directory);
+      reader.write_records(parameters.output.directory);
+      Simulation<1> simulation(parameters,
+                               std::make_unique<BarModel>(parameters.geometry, parameters.contact),
+                               std::cout);
+      simulation.run();
+      return 0;
+    }
     }
   }
   catch (const InputError& error)

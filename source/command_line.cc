@@ -8,14 +8,16 @@ namespace dyncontact
 CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
 {
   CommandLine command_line;
-  bool        action_given = false;
-  const auto  set_action   = [&](const Action action) {
+  bool action_given     = false;
+  const auto set_action = [&](const Action action)
+  {
     if (action_given && command_line.action != action)
       throw InputError("conflicting options; see --help.");
     command_line.action = action;
     action_given        = true;
   };
-  const auto value_of = [&](unsigned int& i) -> const std::string& {
+  const auto value_of = [&](unsigned int& i) -> const std::string&
+  {
     if (i + 1 >= arguments.size())
       throw InputError("option " + arguments[i] + " needs a value; see --help.");
     return arguments[++i];
@@ -49,8 +51,8 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
       throw InputError("more than one parameter file given ('" + command_line.parameter_file +
                        "' and '" + argument + "').");
   }
-  if (!action_given)
-    command_line.action = Action::help;
+  if (!action_given && !command_line.overrides.empty())
+    throw InputError("no parameter file given; see --help.");
   if ((command_line.action == Action::run || command_line.action == Action::validate) &&
       command_line.parameter_file.empty())
     throw InputError("no parameter file given; see --help.");
@@ -59,7 +61,8 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
 
 std::string CommandLine::usage()
 {
-  return "dyncontact: implicit dynamics of elastic bodies in contact (Taylor & Papadopoulos 1993).\n"
+  return "dyncontact: implicit dynamics of elastic bodies in contact (Taylor & Papadopoulos "
+         "1993).\n"
          "\n"
          "Usage:\n"
          "  dyncontact FILE.prm [--set \"Section/entry=value\"]... [--output DIR]\n"
@@ -71,7 +74,8 @@ std::string CommandLine::usage()
          "      print every entry with its documentation, default and allowed values.\n"
          "  dyncontact --help\n"
          "\n"
-         "A run writes into Output/directory: history.csv (one row per step), exact.csv (the exact\n"
+         "A run writes into Output/directory: history.csv (one row per step), exact.csv (the "
+         "exact\n"
          "solution, bars), profile_t<T>.csv, solution-*.vtu with solution.pvd, original.prm (the\n"
          "input as given) and parameters.prm (every value in effect).\n";
 }
@@ -88,7 +92,8 @@ void prepare_output_directory(const std::string& directory)
   {
     std::ofstream file(probe);
     if (!(file << "ok"))
-      throw InputError("Output/directory = '" + directory + "' is not writable; give a writable directory.");
+      throw InputError("Output/directory = '" + directory +
+                       "' is not writable; give a writable directory.");
   }
   std::filesystem::remove(probe, error);
 }

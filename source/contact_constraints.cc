@@ -6,11 +6,9 @@ namespace dyncontact
 {
 template <int dim>
 ContactConstraints<dim>::ContactConstraints(std::vector<ContactPair<dim>> pairs,
-                                            const ContactFormulation      formulation)
-  : pairs(std::move(pairs))
-  , formulation(formulation)
-  , active(this->pairs.size(), false)
-  , multiplier_values(this->pairs.size())
+                                            const ContactFormulation formulation)
+    : pairs(std::move(pairs)), formulation(formulation), active(this->pairs.size(), false),
+      multiplier_values(this->pairs.size())
 {
 }
 
@@ -21,7 +19,7 @@ unsigned int ContactConstraints<dim>::n_active() const
 }
 
 template <int dim>
-double ContactConstraints<dim>::normal_component(const Node<dim>&      node,
+double ContactConstraints<dim>::normal_component(const Node<dim>& node,
                                                  const Tensor<1, dim>& normal,
                                                  const Vector<double>& field) const
 {
@@ -32,19 +30,21 @@ double ContactConstraints<dim>::normal_component(const Node<dim>&      node,
 }
 
 template <int dim>
-double ContactConstraints<dim>::gap(const unsigned int pair_index, const Vector<double>& displacement) const
+double ContactConstraints<dim>::gap(const unsigned int pair_index,
+                                    const Vector<double>& displacement) const
 {
   const ContactPair<dim>& pair = pairs[pair_index];
-  const double            x_a  = pair.normal * pair.node_a.position + normal_component(pair.node_a, pair.normal, displacement);
-  const double            x_b  = pair.against_wall() ?
-                                   pair.normal * pair.wall_point :
-                                   pair.normal * pair.node_b->position +
-                                     normal_component(*pair.node_b, pair.normal, displacement);
+  const double x_a =
+      pair.normal * pair.node_a.position + normal_component(pair.node_a, pair.normal, displacement);
+  const double x_b = pair.against_wall()
+                         ? pair.normal * pair.wall_point
+                         : pair.normal * pair.node_b->position +
+                               normal_component(*pair.node_b, pair.normal, displacement);
   return x_b - x_a;
 }
 
 template <int dim>
-void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern&       sparsity,
+void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern& sparsity,
                                               const types::global_dof_index n_dofs) const
 {
   for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -78,8 +78,8 @@ void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
 }
 
 template <int dim>
-void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>&           displacement,
-                                                       const double                    inactive_diagonal,
+void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& displacement,
+                                                       const double inactive_diagonal,
                                                        TrilinosWrappers::SparseMatrix& matrix,
                                                        Vector<double>& constraint_residual) const
 {
@@ -122,8 +122,8 @@ void ContactConstraints<dim>::add_multiplier_increment(const Vector<double>& inc
 
 template <int dim>
 bool ContactConstraints<dim>::update_active_set(const Vector<double>& displacement,
-                                                const double          gap_tolerance,
-                                                const double          force_tolerance)
+                                                const double gap_tolerance,
+                                                const double force_tolerance)
 {
   bool changed = false;
   for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -142,14 +142,11 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
 }
 
 template <int dim>
-void ContactConstraints<dim>::apply_rate_correction(const Newmark&        newmark,
+void ContactConstraints<dim>::apply_rate_correction(const Newmark& newmark,
                                                     const Vector<double>& lumped_mass,
-                                                    const Vector<double>& u_old,
-                                                    const Vector<double>& v_old,
-                                                    const Vector<double>& a_old,
-                                                    const Vector<double>& u_new,
-                                                    Vector<double>&       v_new,
-                                                    Vector<double>&       a_new) const
+                                                    const NewmarkStep& step,
+                                                    Vector<double>& v_new,
+                                                    Vector<double>& a_new) const
 {
   const double dt    = newmark.time_step();
   const double beta  = newmark.beta();
@@ -159,30 +156,41 @@ void ContactConstraints<dim>::apply_rate_correction(const Newmark&        newmar
   {
     if (!active[k])
       continue;
-    const ContactPair<dim>& pair   = pairs[k];
-    const Tensor<1, dim>&   normal = pair.normal;
+    const ContactPair<dim>& pair = pairs[k];
+    const Tensor<1, dim>& normal = pair.normal;
     // [[f]] = (f_B - f_A) . n; a wall is at rest, so only its position enters.
-    const auto jump = [&](const Vector<double>& field) {
-      const double side_b = pair.against_wall() ? 0. : normal_component(*pair.node_b, normal, field);
+    const auto jump = [&](const Vector<double>& field)
+    {
+      const double side_b =
+          pair.against_wall() ? 0. : normal_component(*pair.node_b, normal, field);
       return side_b - normal_component(pair.node_a, normal, field);
     };
-    const double position_jump = gap(k, u_old);
+    // Eq. (21) assumes the pair is closed at t_{n+1}; its numerator [[X + u_n]] is written here as
+    // g_n - g_{n+1}, identical for Lagrange multipliers (g_{n+1} = 0). With a penalty the pair
+    // penetrates (g_{n+1} < 0) and the literal (21) would leave [[a_{n+1}]] = g_{n+1}/(beta dt^2),
+    // which feeds the penetration back into the rates and grows without bound; this form keeps
+    // [[a_{n+1}]] = 0, the rate condition (10) of persistent contact, for both formulations.
+    const double position_jump = gap(k, step.old_displacement) - gap(k, step.new_displacement);
     const double mass_a        = lumped_mass[pair.node_a.dofs[0]];
     const double inverse_weight_sum =
-      1. / mass_a + (pair.against_wall() ? 0. : 1. / lumped_mass[pair.node_b->dofs[0]]);
+        1. / mass_a + (pair.against_wall() ? 0. : 1. / lumped_mass[pair.node_b->dofs[0]]);
 
     // Eqs. (21) and (22).
+    const Vector<double>& v_old = step.old_velocity;
+    const Vector<double>& a_old = step.old_acceleration;
     const double lambda_a =
-      (position_jump + dt * jump(v_old) + dt * dt * (0.5 - beta) * jump(a_old)) / inverse_weight_sum;
+        (position_jump + dt * jump(v_old) + dt * dt * (0.5 - beta) * jump(a_old)) /
+        inverse_weight_sum;
     const double lambda_v = (jump(v_old) + dt * (1. - gamma) * jump(a_old)) / inverse_weight_sum;
 
     // Recovery of the normal rates of side a = 1 (A, sign -1) and a = 2 (B, sign +1).
-    const auto correct_side = [&](const Node<dim>& node, const double sign) {
+    const auto correct_side = [&](const Node<dim>& node, const double sign)
+    {
+      // [u_{n+1} - u_n - dt v_n - dt^2 (1/2 - beta) a_n] . n is the increment over the predictor.
       const double mass = lumped_mass[node.dofs[0]];
-      const double increment =
-        normal_component(node, normal, u_new) - normal_component(node, normal, u_old) -
-        dt * normal_component(node, normal, v_old) - dt * dt * (0.5 - beta) * normal_component(node, normal, a_old);
-      const double a_normal = (increment + sign * lambda_a / mass) * newmark.inertia_factor();
+      const double a_normal =
+          (normal_component(node, normal, step.increment) + sign * lambda_a / mass) *
+          newmark.inertia_factor();
       const double v_normal = normal_component(node, normal, v_old) +
                               dt * (1. - gamma) * normal_component(node, normal, a_old) +
                               dt * gamma * a_normal - sign * lambda_v / mass;

@@ -17,17 +17,18 @@ struct PointDisplacement
 };
 
 template <int dim>
-PointDisplacement<dim> interpolate_displacement(const FEValues<dim>&                        fe_values,
-                                                const std::vector<types::global_dof_index>& local_dofs,
-                                                const Vector<double>&                       displacement,
-                                                const unsigned int                          q)
+PointDisplacement<dim>
+interpolate_displacement(const FEValues<dim>& fe_values,
+                         const std::vector<types::global_dof_index>& local_dofs,
+                         const Vector<double>& displacement,
+                         const unsigned int q)
 {
   const FiniteElement<dim>& fe = fe_values.get_fe();
-  PointDisplacement<dim>    result;
+  PointDisplacement<dim> result;
   for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
   {
     const unsigned int component = fe.system_to_component_index(i).first;
-    const double       nodal     = displacement[local_dofs[i]];
+    const double nodal           = displacement[local_dofs[i]];
     result.value[component] += nodal * fe_values.shape_value(i, q);
     result.gradient[component] += nodal * fe_values.shape_grad(i, q);
   }
@@ -36,14 +37,11 @@ PointDisplacement<dim> interpolate_displacement(const FEValues<dim>&            
 } // namespace
 
 template <int dim>
-ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>&    dof_handler,
-                                  const Mapping<dim>&       mapping,
-                                  const Kinematics<dim>&    kinematics,
+ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
+                                  const Mapping<dim>& mapping,
+                                  const Kinematics<dim>& kinematics,
                                   std::vector<BodyMaterial> bodies)
-  : dof_handler(dof_handler)
-  , mapping(mapping)
-  , kinematics(kinematics)
-  , bodies(std::move(bodies))
+    : dof_handler(dof_handler), mapping(mapping), kinematics(kinematics), bodies(std::move(bodies))
 {
   for (const auto& cell : dof_handler.active_cell_iterators())
     AssertThrow(cell->material_id() < this->bodies.size(),
@@ -56,12 +54,10 @@ template <int dim>
 Vector<double> ElasticBodies<dim>::lumped_mass() const
 {
   const FiniteElement<dim>& fe = dof_handler.get_fe();
-  const QGaussLobatto<dim>  nodal_quadrature(fe.degree + 1);
-  FEValues<dim>             fe_values(mapping,
-                          fe,
-                          nodal_quadrature,
-                          update_values | update_quadrature_points | update_JxW_values);
-  Vector<double>            mass(dof_handler.n_dofs());
+  const QGaussLobatto<dim> nodal_quadrature(fe.degree + 1);
+  FEValues<dim> fe_values(
+      mapping, fe, nodal_quadrature, update_values | update_quadrature_points | update_JxW_values);
+  Vector<double> mass(dof_handler.n_dofs());
   std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
@@ -70,8 +66,9 @@ Vector<double> ElasticBodies<dim>::lumped_mass() const
     const double density = bodies[cell->material_id()].density;
     for (unsigned int q = 0; q < nodal_quadrature.size(); ++q)
     {
-      const double weight = density * fe_values.JxW(q) *
-                            kinematics.measure_factor(fe_values.quadrature_point(q), cell->material_id());
+      const double weight =
+          density * fe_values.JxW(q) *
+          kinematics.measure_factor(fe_values.quadrature_point(q), cell->material_id());
       for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
         mass[local_dofs[i]] += weight * fe_values.shape_value(i, q);
     }
@@ -80,42 +77,71 @@ Vector<double> ElasticBodies<dim>::lumped_mass() const
 }
 
 template <int dim>
-void ElasticBodies<dim>::assemble_internal_force(const Vector<double>&           displacement,
-                                                 Vector<double>&                 internal_force,
+void ElasticBodies<dim>::assemble_internal_force(const Vector<double>& displacement,
+                                                 Vector<double>& internal_force,
                                                  TrilinosWrappers::SparseMatrix* tangent) const
 {
+  integrate(displacement, &internal_force, tangent, nullptr);
+}
+
+template <int dim>
+double ElasticBodies<dim>::strain_energy(const Vector<double>& displacement) const
+{
+  double energy = 0.;
+  integrate(displacement, nullptr, nullptr, &energy);
+  return energy;
+}
+
+template <int dim>
+void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
+                                   Vector<double>* internal_force,
+                                   TrilinosWrappers::SparseMatrix* tangent,
+                                   double* strain_energy) const
+{
   const FiniteElement<dim>& fe = dof_handler.get_fe();
-  const QGauss<dim>         quadrature(fe.degree + 1);
-  FEValues<dim>             fe_values(mapping,
+  const QGauss<dim> quadrature(fe.degree + 1);
+  FEValues<dim> fe_values(mapping,
                           fe,
                           quadrature,
                           update_values | update_gradients | update_quadrature_points |
-                            update_JxW_values);
-  const unsigned int        n_local = fe.n_dofs_per_cell();
+                              update_JxW_values);
+  const unsigned int n_local = fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> local_dofs(n_local);
-  Vector<double>                       cell_force(n_local);
-  FullMatrix<double>                   cell_tangent(n_local, n_local);
-  std::vector<Tensor<2, 3>>            variations(n_local);
-  std::vector<Tensor<2, 3>>            tangent_times_variation(n_local);
+  Vector<double> cell_force(n_local);
+  FullMatrix<double> cell_tangent(n_local, n_local);
+  std::vector<Tensor<2, 3>> variations(n_local);
+  std::vector<Tensor<2, 3>> tangent_times_variation(n_local);
 
-  internal_force.reinit(dof_handler.n_dofs());
+  if (internal_force != nullptr)
+    internal_force->reinit(dof_handler.n_dofs());
+  if (strain_energy != nullptr)
+    *strain_energy = 0.;
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     fe_values.reinit(cell);
     cell->get_dof_indices(local_dofs);
-    cell_force   = 0.;
-    cell_tangent = 0.;
+    cell_force               = 0.;
+    cell_tangent             = 0.;
     const Material& material = *bodies[cell->material_id()].material;
     for (unsigned int q = 0; q < quadrature.size(); ++q)
     {
-      const Point<dim>&            X = fe_values.quadrature_point(q);
-      const PointDisplacement<dim> u = interpolate_displacement(fe_values, local_dofs, displacement, q);
-      const Tensor<2, 3>           F = kinematics.deformation_gradient(u.gradient, u.value, X);
-      const Tensor<2, 3> P  = material.first_piola_kirchhoff_stress(F);
-      const double       dV = fe_values.JxW(q) * kinematics.measure_factor(X, cell->material_id());
+      const Point<dim>& X = fe_values.quadrature_point(q);
+      const PointDisplacement<dim> u =
+          interpolate_displacement(fe_values, local_dofs, displacement, q);
+      const Tensor<2, 3> F = kinematics.deformation_gradient(u.gradient, u.value, X);
+      const double dV      = fe_values.JxW(q) * kinematics.measure_factor(X, cell->material_id());
+      if (strain_energy != nullptr)
+        *strain_energy += material.strain_energy_density(F) * dV;
+      if (internal_force == nullptr && tangent == nullptr)
+        continue;
+
+      const Tensor<2, 3> P = material.first_piola_kirchhoff_stress(F);
       for (unsigned int i = 0; i < n_local; ++i)
-        variations[i] = kinematics.deformation_gradient_variation(
-          fe.system_to_component_index(i).first, fe_values.shape_value(i, q), fe_values.shape_grad(i, q), X);
+        variations[i] =
+            kinematics.deformation_gradient_variation(fe.system_to_component_index(i).first,
+                                                      fe_values.shape_value(i, q),
+                                                      fe_values.shape_grad(i, q),
+                                                      X);
       for (unsigned int i = 0; i < n_local; ++i)
         cell_force[i] += scalar_product(P, variations[i]) * dV;
       if (tangent != nullptr)
@@ -128,39 +154,12 @@ void ElasticBodies<dim>::assemble_internal_force(const Vector<double>&          
             cell_tangent(i, j) += scalar_product(variations[i], tangent_times_variation[j]) * dV;
       }
     }
-    for (unsigned int i = 0; i < n_local; ++i)
-      internal_force[local_dofs[i]] += cell_force[i];
+    if (internal_force != nullptr)
+      for (unsigned int i = 0; i < n_local; ++i)
+        (*internal_force)[local_dofs[i]] += cell_force[i];
     if (tangent != nullptr)
       tangent->add(local_dofs, cell_tangent);
   }
-}
-
-template <int dim>
-double ElasticBodies<dim>::strain_energy(const Vector<double>& displacement) const
-{
-  const FiniteElement<dim>& fe = dof_handler.get_fe();
-  const QGauss<dim>         quadrature(fe.degree + 1);
-  FEValues<dim>             fe_values(mapping,
-                          fe,
-                          quadrature,
-                          update_values | update_gradients | update_quadrature_points |
-                            update_JxW_values);
-  std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
-  double                               energy = 0.;
-  for (const auto& cell : dof_handler.active_cell_iterators())
-  {
-    fe_values.reinit(cell);
-    cell->get_dof_indices(local_dofs);
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
-    {
-      const Point<dim>&            X = fe_values.quadrature_point(q);
-      const PointDisplacement<dim> u = interpolate_displacement(fe_values, local_dofs, displacement, q);
-      energy += bodies[cell->material_id()].material->strain_energy_density(
-                  kinematics.deformation_gradient(u.gradient, u.value, X)) *
-                fe_values.JxW(q) * kinematics.measure_factor(X, cell->material_id());
-    }
-  }
-  return energy;
 }
 
 template class ElasticBodies<1>;

@@ -10,30 +10,31 @@ namespace dyncontact
 {
 template <int dim>
 FieldOutput<dim>::FieldOutput(const DoFHandler<dim>& dof_handler,
-                              const Mapping<dim>&    mapping,
-                              std::string            directory)
-  : dof_handler(dof_handler)
-  , mapping(mapping)
-  , directory(std::move(directory))
+                              const Mapping<dim>& mapping,
+                              std::string directory)
+    : dof_handler(dof_handler), mapping(mapping), directory(std::move(directory))
 {
 }
 
 template <int dim>
-void FieldOutput<dim>::write_fields(const unsigned int    step,
-                                    const double          time,
+void FieldOutput<dim>::write_fields(const unsigned int step,
+                                    const double time,
                                     const Vector<double>& displacement,
                                     const Vector<double>& velocity,
                                     const Vector<double>& acceleration)
 {
   const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
-    dim, DataComponentInterpretation::component_is_part_of_vector);
+      dim, DataComponentInterpretation::component_is_part_of_vector);
   DataOut<dim> data_out;
   data_out.attach_dof_handler(dof_handler);
   data_out.add_data_vector(displacement,
                            std::vector<std::string>(dim, "displacement"),
                            DataOut<dim>::type_dof_data,
                            vector_field);
-  data_out.add_data_vector(velocity, std::vector<std::string>(dim, "velocity"), DataOut<dim>::type_dof_data, vector_field);
+  data_out.add_data_vector(velocity,
+                           std::vector<std::string>(dim, "velocity"),
+                           DataOut<dim>::type_dof_data,
+                           vector_field);
   data_out.add_data_vector(acceleration,
                            std::vector<std::string>(dim, "acceleration"),
                            DataOut<dim>::type_dof_data,
@@ -54,15 +55,15 @@ void FieldOutput<dim>::write_fields(const unsigned int    step,
 }
 
 template <int dim>
-void FieldOutput<dim>::write_profile(const double                  time,
+void FieldOutput<dim>::write_profile(const double time,
                                      const std::vector<Node<dim>>& nodes,
-                                     const Vector<double>&         displacement,
-                                     const Vector<double>&         velocity,
-                                     const Vector<double>&         acceleration) const
+                                     const Vector<double>& displacement,
+                                     const Vector<double>& velocity,
+                                     const Vector<double>& acceleration) const
 {
   std::ostringstream name;
   name << directory << "/profile_t" << time << ".csv";
-  std::ofstream     file(name.str());
+  std::ofstream file(name.str());
   const std::string axes = "xyz";
   file << "body";
   for (unsigned int d = 0; d < dim; ++d)

@@ -6,10 +6,7 @@
 
 namespace dyncontact
 {
-History::History(std::vector<std::string> column_names)
-  : names(std::move(column_names))
-{
-}
+History::History(std::vector<std::string> column_names) : names(std::move(column_names)) {}
 
 void History::attach_file(const std::string& filename)
 {
@@ -52,7 +49,7 @@ unsigned int History::column_index(const std::string& name) const
 
 std::vector<double> History::column(const std::string& name) const
 {
-  const unsigned int  index = column_index(name);
+  const unsigned int index = column_index(name);
   std::vector<double> values;
   values.reserve(rows.size());
   for (const auto& row : rows)

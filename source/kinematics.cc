@@ -4,10 +4,7 @@
 
 namespace dyncontact
 {
-BarKinematics::BarKinematics(std::vector<double> areas)
-  : areas(std::move(areas))
-{
-}
+BarKinematics::BarKinematics(std::vector<double> areas) : areas(std::move(areas)) {}
 
 Tensor<2, 3> BarKinematics::deformation_gradient(const Tensor<2, 1>& displacement_gradient,
                                                  const Tensor<1, 1>&,

@@ -3,10 +3,8 @@
 namespace dyncontact
 {
 Newmark::Newmark(const TimeIntegrationParameters& parameters)
-  : scheme_value(parameters.scheme)
-  , beta_value(parameters.beta)
-  , gamma_value(parameters.gamma)
-  , dt(parameters.time_step)
+    : scheme_value(parameters.scheme), beta_value(parameters.beta), gamma_value(parameters.gamma),
+      dt(parameters.time_step)
 {
   Assert(beta_value > 0., ExcMessage("beta > 0 is checked when the parameters are read."));
 }
@@ -14,21 +12,19 @@ Newmark::Newmark(const TimeIntegrationParameters& parameters)
 void Newmark::predict(const Vector<double>& u_n,
                       const Vector<double>& v_n,
                       const Vector<double>& a_n,
-                      Vector<double>&       predictor) const
+                      Vector<double>& predictor) const
 {
   predictor = u_n;
   predictor.add(dt, v_n, dt * dt * (0.5 - beta_value), a_n);
 }
 
-void Newmark::update_rates(const Vector<double>& u_new,
-                           const Vector<double>& predictor,
+void Newmark::update_rates(const Vector<double>& increment,
                            const Vector<double>& v_n,
                            const Vector<double>& a_n,
-                           Vector<double>&       v_new,
-                           Vector<double>&       a_new) const
+                           Vector<double>& v_new,
+                           Vector<double>& a_new) const
 {
-  a_new = u_new;
-  a_new -= predictor;
+  a_new = increment;
   a_new *= inertia_factor();
   v_new = v_n;
   v_new.add(dt * (1. - gamma_value), a_n, dt * gamma_value, a_new);
@@ -38,7 +34,8 @@ double Newmark::algorithmic_energy(const double kinetic_energy,
                                    const double strain_energy,
                                    const double acceleration_energy) const
 {
-  // acceleration_energy = 1/2 a.Ma, so (beta - 1/4) dt^2/2 a.Ma = (beta - 1/4) dt^2 acceleration_energy.
+  // acceleration_energy = 1/2 a.Ma, so (beta - 1/4) dt^2/2 a.Ma = (beta - 1/4) dt^2
+  // acceleration_energy.
   return kinetic_energy + strain_energy + (beta_value - 0.25) * dt * dt * acceleration_energy;
 }
 } // namespace dyncontact

@@ -16,8 +16,8 @@ NodeIndex<dim>::NodeIndex(const DoFHandler<dim>& dof_handler, const Mapping<dim>
   const std::vector<Point<dim>>& unit_points = fe.get_unit_support_points();
 
   // Key a node by the DoF of its first component; collect the other components' DoFs into it.
-  std::map<types::global_dof_index, Node<dim>>       nodes_by_first_dof;
-  std::vector<types::global_dof_index>               local_dofs(fe.n_dofs_per_cell());
+  std::map<types::global_dof_index, Node<dim>> nodes_by_first_dof;
+  std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     cell->get_dof_indices(local_dofs);
@@ -25,7 +25,7 @@ NodeIndex<dim>::NodeIndex(const DoFHandler<dim>& dof_handler, const Mapping<dim>
     std::map<unsigned int, std::array<types::global_dof_index, dim>> dofs_of_base_node;
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
     {
-      const auto [component, base_index]      = fe.system_to_component_index(i);
+      const auto [component, base_index]       = fe.system_to_component_index(i);
       dofs_of_base_node[base_index][component] = local_dofs[i];
     }
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
@@ -42,22 +42,25 @@ NodeIndex<dim>::NodeIndex(const DoFHandler<dim>& dof_handler, const Mapping<dim>
   }
   for (const auto& entry : nodes_by_first_dof)
     all_nodes.push_back(entry.second);
-  std::sort(all_nodes.begin(), all_nodes.end(), [](const Node<dim>& a, const Node<dim>& b) {
-    if (a.body != b.body)
-      return a.body < b.body;
-    for (unsigned int d = 0; d < dim; ++d)
-      if (a.position[d] != b.position[d])
-        return a.position[d] < b.position[d];
-    return false;
-  });
+  std::sort(all_nodes.begin(),
+            all_nodes.end(),
+            [](const Node<dim>& a, const Node<dim>& b)
+            {
+              if (a.body != b.body)
+                return a.body < b.body;
+              for (unsigned int d = 0; d < dim; ++d)
+                if (a.position[d] != b.position[d])
+                  return a.position[d] < b.position[d];
+              return false;
+            });
 }
 
 template <int dim>
 const Node<dim>& NodeIndex<dim>::closest_node(const types::material_id body,
-                                              const Point<dim>&        point) const
+                                              const Point<dim>& point) const
 {
-  const Node<dim>* closest  = nullptr;
-  double           distance = std::numeric_limits<double>::max();
+  const Node<dim>* closest = nullptr;
+  double distance          = std::numeric_limits<double>::max();
   for (const auto& node : all_nodes)
     if (node.body == body && node.position.distance(point) < distance)
     {

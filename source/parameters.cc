@@ -38,8 +38,8 @@ double get_positive(ParameterHandler& prm, const std::string& entry, const std::
 struct Override
 {
   std::vector<std::string> subsections;
-  std::string              entry;
-  std::string              value;
+  std::string entry;
+  std::string value;
 };
 
 Override split_override(const std::string& text)
@@ -48,9 +48,9 @@ Override split_override(const std::string& text)
   if (equal_sign == std::string::npos || equal_sign == 0)
     throw InputError("--set '" + text + "': expected \"Section/entry=value\".");
   Override result;
-  result.value                = Utilities::trim(text.substr(equal_sign + 1));
+  result.value                  = Utilities::trim(text.substr(equal_sign + 1));
   std::vector<std::string> path = Utilities::split_string_list(text.substr(0, equal_sign), '/');
-  result.entry                = path.back();
+  result.entry                  = path.back();
   path.pop_back();
   result.subsections = path;
   return result;
@@ -81,7 +81,10 @@ void apply_override(ParameterHandler& prm, const std::string& text, const bool i
     prm.leave_subsection();
 }
 
-std::string bar_section(const unsigned int bar) { return "Bar " + std::to_string(bar + 1); }
+std::string bar_section(const unsigned int bar)
+{
+  return "Bar " + std::to_string(bar + 1);
+}
 
 /** Declares everything for a problem with `n_bars` bars. */
 void declare_all(ParameterHandler& prm, const unsigned int n_bars)
@@ -115,7 +118,7 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
                     Patterns::Selection("classical|modified"),
                     "Newmark variant. classical: contact constrains displacements only. modified: "
                     "Taylor & Papadopoulos (1993), normal velocity and acceleration of every "
-                    "active contact pair are made continuous after each step (method.md 4).");
+                    "active contact pair are made continuous after each step (paper eqs. 19-24).");
   prm.declare_entry("beta",
                     "0.25",
                     Patterns::Double(0., 0.5),
@@ -139,9 +142,9 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
 void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Time integration");
-  scheme    = prm.get("scheme") == "modified" ? NewmarkScheme::modified : NewmarkScheme::classical;
-  beta      = prm.get_double("beta");
-  gamma     = prm.get_double("gamma");
+  scheme = prm.get("scheme") == "modified" ? NewmarkScheme::modified : NewmarkScheme::classical;
+  beta   = prm.get_double("beta");
+  gamma  = prm.get_double("gamma");
   if (!(beta > 0.))
     throw InputError("Time integration/beta = 0 is not supported: with beta = 0 the displacement "
                      "u_{n+1} is explicit and the contact constraint cannot act on it. Use "
@@ -165,16 +168,16 @@ void ContactParameters::declare_parameters(ParameterHandler& prm)
                     Patterns::Double(0.),
                     "Penalty only: stiffness eps of a pair [force/length] = this factor [-] times "
                     "E A / h of the stiffer side (h: element length at the contact node), > 0. "
-                    "With beta < gamma/2 the scheme is only conditionally stable and a large "
-                    "penalty needs a small time step (a warning says so).");
+                    "With the classical scheme and beta < gamma/2 a large penalty needs a small "
+                    "time step (a warning at start says so).");
   prm.leave_subsection();
 }
 
 void ContactParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Contact");
-  formulation    = prm.get("formulation") == "penalty" ? ContactFormulation::penalty :
-                                                         ContactFormulation::lagrange_multiplier;
+  formulation    = prm.get("formulation") == "penalty" ? ContactFormulation::penalty
+                                                       : ContactFormulation::lagrange_multiplier;
   penalty_factor = get_positive(prm, "penalty factor", "Contact");
   prm.leave_subsection();
 }
@@ -204,11 +207,15 @@ void NewtonParameters::parse_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 }
 
-double BarParameters::wave_speed() const { return std::sqrt(youngs_modulus / density); }
+double BarParameters::wave_speed() const
+{
+  return std::sqrt(youngs_modulus / density);
+}
 
 void BarParameters::declare_parameters(ParameterHandler& prm)
 {
-  prm.declare_entry("left end", "0", Patterns::Double(), "x of the bar's left end at t = 0 [length].");
+  prm.declare_entry(
+      "left end", "0", Patterns::Double(), "x of the bar's left end at t = 0 [length].");
   prm.declare_entry("length", "10", Patterns::Double(0.), "Bar length L [length], > 0.");
   prm.declare_entry("number of elements",
                     "100",
@@ -281,12 +288,11 @@ void GeometryParameters::parse_parameters(ParameterHandler& prm)
   for (unsigned int a = 0; a < n_bars; ++a)
     for (unsigned int b = a + 1; b < n_bars; ++b)
       if (bars[a].left_end < bars[b].right_end() && bars[b].left_end < bars[a].right_end())
-        throw InputError("Geometry: Bar " + std::to_string(a + 1) + " [" +
-                         std::to_string(bars[a].left_end) + ", " +
-                         std::to_string(bars[a].right_end()) + "] and Bar " +
-                         std::to_string(b + 1) + " [" + std::to_string(bars[b].left_end) + ", " +
-                         std::to_string(bars[b].right_end()) +
-                         "] overlap at t = 0; bars may touch but not overlap.");
+        throw InputError(
+            "Geometry: Bar " + std::to_string(a + 1) + " [" + std::to_string(bars[a].left_end) +
+            ", " + std::to_string(bars[a].right_end()) + "] and Bar " + std::to_string(b + 1) +
+            " [" + std::to_string(bars[b].left_end) + ", " + std::to_string(bars[b].right_end()) +
+            "] overlap at t = 0; bars may touch but not overlap.");
   if (wall_enabled)
     for (unsigned int bar = 0; bar < n_bars; ++bar)
       if (bars[bar].right_end() > wall_position)
@@ -335,14 +341,18 @@ void OutputParameters::parse_parameters(ParameterHandler& prm)
   prm.leave_subsection();
 }
 
-ParameterReader::ParameterReader(const std::string&              filename,
+ParameterReader::ParameterReader(const std::string& filename,
                                  const std::vector<std::string>& overrides)
-  : input_filename(filename)
-  , overrides(overrides)
+    : input_filename(filename), overrides(overrides)
 {
+  if (!std::filesystem::exists(filename))
+    throw InputError("cannot read parameter file '" + filename + "': no such file.");
+  if (std::filesystem::is_directory(filename))
+    throw InputError("cannot read parameter file '" + filename + "': it is a directory.");
   std::ifstream input(filename);
-  if (!input || std::filesystem::is_directory(filename))
-    throw InputError("cannot read parameter file '" + filename + "'.");
+  if (!input)
+    throw InputError("cannot read parameter file '" + filename +
+                     "': permission denied or unreadable.");
   std::stringstream buffer;
   buffer << input.rdbuf();
   input_text = buffer.str();

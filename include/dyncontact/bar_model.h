@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dyncontact/exact_bar_solution.h>
 #include <dyncontact/parameters.h>
 #include <dyncontact/problem_model.h>
 
@@ -18,24 +19,27 @@ class BarModel : public ProblemModel<1>
 public:
   BarModel(const GeometryParameters& geometry, const ContactParameters& contact);
 
-  unsigned int                      element_degree() const override { return 1; }
-  void                              create_triangulation(Triangulation<1>& triangulation) const override;
-  std::vector<BodyMaterial>         body_materials() const override;
-  std::unique_ptr<Kinematics<1>>    create_kinematics() const override;
-  Tensor<1, 1>                      initial_velocity(types::material_id body, const Point<1>& X) const override;
-  std::vector<ContactPair<1>>       contact_pairs(const NodeIndex<1>& nodes) const override;
-  std::vector<Node<1>>              monitor_nodes(const NodeIndex<1>& nodes) const override;
-  Tensor<1, 1>                      impact_direction() const override;
-  void                              write_reference(const std::string&          directory,
-                                                    const std::vector<double>&  times,
-                                                    const std::vector<Node<1>>& monitors) const override;
-  void                              print_summary(std::ostream& out, double time_step) const override;
+  unsigned int element_degree() const override { return 1; }
+  void create_triangulation(Triangulation<1>& triangulation) const override;
+  std::vector<BodyMaterial> body_materials() const override;
+  std::unique_ptr<Kinematics<1>> create_kinematics() const override;
+  Tensor<1, 1> initial_velocity(types::material_id body, const Point<1>& X) const override;
+  std::vector<ContactPair<1>> contact_pairs(const NodeIndex<1>& nodes) const override;
+  std::vector<Node<1>> monitor_nodes(const NodeIndex<1>& nodes) const override;
+  Tensor<1, 1> impact_direction() const override;
+  void write_reference(const std::string& directory,
+                       const std::vector<double>& times,
+                       const std::vector<Node<1>>& monitors) const override;
+  void print_summary(std::ostream& out, double time_step) const override;
+
+  /** The exact wave solution of these bars, tracked up to `end_time`. */
+  ExactBarSolution exact_solution(double end_time) const;
 
 private:
   /** Bar indices sorted by position along x. */
   std::vector<unsigned int> bars_in_x_order() const;
 
   GeometryParameters geometry;
-  ContactParameters  contact;
+  ContactParameters contact;
 };
 } // namespace dyncontact

@@ -22,8 +22,8 @@ struct CommandLine
     help
   };
 
-  Action                   action = Action::help;
-  std::string              parameter_file;
+  Action action = Action::help;
+  std::string parameter_file;
   std::vector<std::string> overrides; ///< "Section/entry=value", in order; --output adds one
 
   /** Throws InputError naming the offending argument. */

@@ -23,18 +23,19 @@ namespace dyncontact
 template <int dim>
 struct ContactPair
 {
-  Node<dim>                node_a;
+  Node<dim> node_a;
   std::optional<Node<dim>> node_b; ///< empty: a rigid wall through `wall_point`
-  Point<dim>               wall_point;
-  Tensor<1, dim>           normal;
-  double                   penalty_stiffness; ///< used by the penalty formulation only
+  Point<dim> wall_point;
+  Tensor<1, dim> normal;
+  double penalty_stiffness; ///< used by the penalty formulation only
 
   bool against_wall() const { return !node_b.has_value(); }
 };
 
 /**
  * The contact layer: the candidate pairs, their active set and multipliers, their rows in the
- * saddle-point system, and the modified Newmark's rate correction (method.md section 4).
+ * saddle-point system, and the modified Newmark's rate correction (Taylor & Papadopoulos 1993,
+ * section 5).
  *
  * Every candidate owns one multiplier unknown, so the sparsity pattern never changes; an inactive
  * pair gets the trivial row lambda = 0. The Lagrange multiplier formulation enforces g = 0 on the
@@ -50,10 +51,10 @@ class ContactConstraints
 public:
   ContactConstraints(std::vector<ContactPair<dim>> pairs, ContactFormulation formulation);
 
-  unsigned int                         n_pairs() const { return pairs.size(); }
+  unsigned int n_pairs() const { return pairs.size(); }
   const std::vector<ContactPair<dim>>& candidate_pairs() const { return pairs; }
-  unsigned int                         n_active() const;
-  bool                                 is_active(unsigned int pair) const { return active[pair]; }
+  unsigned int n_active() const;
+  bool is_active(unsigned int pair) const { return active[pair]; }
   /// multipliers, one per candidate, compression positive (zero for inactive pairs)
   const Vector<double>& multipliers() const { return multiplier_values; }
 
@@ -72,10 +73,10 @@ public:
    * -g - lambda/eps (penalty) for active pairs, lambda for inactive ones with diagonal
    * `inactive_diagonal`. The update is (delta u, delta lambda) = matrix^{-1} (-residual).
    */
-  void assemble_constraint_rows(const Vector<double>&           displacement,
-                                double                          inactive_diagonal,
+  void assemble_constraint_rows(const Vector<double>& displacement,
+                                double inactive_diagonal,
                                 TrilinosWrappers::SparseMatrix& matrix,
-                                Vector<double>&                 constraint_residual) const;
+                                Vector<double>& constraint_residual) const;
 
   /** Adds a Newton increment of the multipliers. */
   void add_multiplier_increment(const Vector<double>& increment);
@@ -85,22 +86,21 @@ public:
    * active pairs with lambda < -force_tolerance leave (their multiplier is reset to zero).
    * Returns whether anything changed.
    */
-  bool update_active_set(const Vector<double>& displacement, double gap_tolerance, double force_tolerance);
+  bool update_active_set(const Vector<double>& displacement,
+                         double gap_tolerance,
+                         double force_tolerance);
 
   /**
-   * The modified Newmark correction, method.md eqs. (21)-(22) and the recovery formulas after
+   * The modified Newmark correction, the paper's eqs. (21)-(22) and the recovery formulas after
    * them, with weights equal to the lumped nodal masses (a wall has infinite weight): on every
    * active pair the normal components of v_{n+1} and a_{n+1} are corrected so that their jumps
    * vanish. Tangential components and all other nodes keep the classical values.
    */
-  void apply_rate_correction(const Newmark&        newmark,
+  void apply_rate_correction(const Newmark& newmark,
                              const Vector<double>& lumped_mass,
-                             const Vector<double>& u_old,
-                             const Vector<double>& v_old,
-                             const Vector<double>& a_old,
-                             const Vector<double>& u_new,
-                             Vector<double>&       v_new,
-                             Vector<double>&       a_new) const;
+                             const NewmarkStep& step,
+                             Vector<double>& v_new,
+                             Vector<double>& a_new) const;
 
   /**
    * Total interface force, compression positive, recovered from the equations of motion of the
@@ -117,11 +117,13 @@ public:
 
 private:
   /** Normal component n . f of a nodal vector field at `node`. */
-  double normal_component(const Node<dim>& node, const Tensor<1, dim>& normal, const Vector<double>& field) const;
+  double normal_component(const Node<dim>& node,
+                          const Tensor<1, dim>& normal,
+                          const Vector<double>& field) const;
 
   std::vector<ContactPair<dim>> pairs;
-  ContactFormulation            formulation;
-  std::vector<bool>             active;
-  Vector<double>                multiplier_values;
+  ContactFormulation formulation;
+  std::vector<bool> active;
+  Vector<double> multiplier_values;
 };
 } // namespace dyncontact

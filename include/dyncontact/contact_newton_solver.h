@@ -31,40 +31,40 @@ public:
   struct Report
   {
     unsigned int linear_solves;
-    double       residual_norm;
+    double residual_norm;
   };
 
   /**
    * `length_scale` (e.g. the smallest element size) turns the relative tolerance into the gap
    * tolerance used for activation and constraint convergence.
    */
-  ContactNewtonSolver(const DoFHandler<dim>&     dof_handler,
-                      const ElasticBodies<dim>&  bodies,
-                      ContactConstraints<dim>&   contact,
-                      const Vector<double>&      lumped_mass,
-                      const NewtonParameters&    parameters,
-                      double                     length_scale);
+  ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
+                      const ElasticBodies<dim>& bodies,
+                      ContactConstraints<dim>& contact,
+                      const Vector<double>& lumped_mass,
+                      const NewtonParameters& parameters,
+                      double length_scale);
 
   /**
-   * Solves the step. `displacement` holds the initial guess (the predictor) on entry and the
-   * converged u_{n+1} on exit; the contact multipliers and active set are updated in place.
-   * Throws SolverFailure if Newton does not converge within the iteration limit or the linear
-   * solver fails.
+   * Solves the step for the increment u_{n+1} - u~ over the predictor u~ (initial guess: the
+   * value `increment` holds on entry, usually zero); on exit u_{n+1} = predictor + increment.
+   * The contact multipliers and active set are updated in place. Throws SolverFailure if Newton
+   * does not converge within the iteration limit or the linear solver fails.
    */
-  Report solve(const Vector<double>& predictor, double inertia_factor, Vector<double>& displacement);
+  Report solve(const Vector<double>& predictor, double inertia_factor, Vector<double>& increment);
 
   /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */
   const Vector<double>& internal_force() const { return internal_force_values; }
 
 private:
-  const DoFHandler<dim>&         dof_handler;
-  const ElasticBodies<dim>&      bodies;
-  ContactConstraints<dim>&       contact;
-  const Vector<double>&          lumped_mass;
-  const NewtonParameters         parameters;
-  const double                   gap_tolerance;
-  SparsityPattern                sparsity;
+  const DoFHandler<dim>& dof_handler;
+  const ElasticBodies<dim>& bodies;
+  ContactConstraints<dim>& contact;
+  const Vector<double>& lumped_mass;
+  const NewtonParameters parameters;
+  const double gap_tolerance;
+  SparsityPattern sparsity;
   TrilinosWrappers::SparseMatrix matrix;
-  Vector<double>                 internal_force_values;
+  Vector<double> internal_force_values;
 };
 } // namespace dyncontact

@@ -18,7 +18,7 @@ namespace dyncontact
 struct BodyMaterial
 {
   std::shared_ptr<const Material> material;
-  double                          density;
+  double density;
 };
 
 /**
@@ -34,9 +34,9 @@ template <int dim>
 class ElasticBodies
 {
 public:
-  ElasticBodies(const DoFHandler<dim>&   dof_handler,
-                const Mapping<dim>&      mapping,
-                const Kinematics<dim>&   kinematics,
+  ElasticBodies(const DoFHandler<dim>& dof_handler,
+                const Mapping<dim>& mapping,
+                const Kinematics<dim>& kinematics,
                 std::vector<BodyMaterial> bodies);
 
   /** Diagonal of the lumped mass matrix, one entry per DoF. */
@@ -46,8 +46,8 @@ public:
    * Internal force Q(u) into `internal_force` (overwritten) and, if `tangent` is not null, dQ/du
    * added into its leading n_dofs x n_dofs block (the caller zeroes it).
    */
-  void assemble_internal_force(const Vector<double>&           displacement,
-                               Vector<double>&                 internal_force,
+  void assemble_internal_force(const Vector<double>& displacement,
+                               Vector<double>& internal_force,
                                TrilinosWrappers::SparseMatrix* tangent) const;
 
   /** Total strain energy, the integral of W(F) over all bodies. */
@@ -57,9 +57,15 @@ public:
   unsigned int n_bodies() const { return bodies.size(); }
 
 private:
-  const DoFHandler<dim>&    dof_handler;
-  const Mapping<dim>&       mapping;
-  const Kinematics<dim>&    kinematics;
+  /** One pass over all quadrature points filling whichever of the outputs is not null. */
+  void integrate(const Vector<double>& displacement,
+                 Vector<double>* internal_force,
+                 TrilinosWrappers::SparseMatrix* tangent,
+                 double* strain_energy) const;
+
+  const DoFHandler<dim>& dof_handler;
+  const Mapping<dim>& mapping;
+  const Kinematics<dim>& kinematics;
   std::vector<BodyMaterial> bodies;
 };
 } // namespace dyncontact

@@ -23,11 +23,13 @@ template <int dim>
 class FieldOutput
 {
 public:
-  FieldOutput(const DoFHandler<dim>& dof_handler, const Mapping<dim>& mapping, std::string directory);
+  FieldOutput(const DoFHandler<dim>& dof_handler,
+              const Mapping<dim>& mapping,
+              std::string directory);
 
   /** Writes `solution-<step>.vtu` and updates `solution.pvd`. */
-  void write_fields(unsigned int          step,
-                    double                time,
+  void write_fields(unsigned int step,
+                    double time,
                     const Vector<double>& displacement,
                     const Vector<double>& velocity,
                     const Vector<double>& acceleration);
@@ -36,16 +38,16 @@ public:
    * Writes `profile_t<time>.csv` with one row per node: body (1-based), reference coordinates,
    * then displacement, velocity and acceleration components (1D: body, x, u, v, a).
    */
-  void write_profile(double                        time,
+  void write_profile(double time,
                      const std::vector<Node<dim>>& nodes,
-                     const Vector<double>&         displacement,
-                     const Vector<double>&         velocity,
-                     const Vector<double>&         acceleration) const;
+                     const Vector<double>& displacement,
+                     const Vector<double>& velocity,
+                     const Vector<double>& acceleration) const;
 
 private:
-  const DoFHandler<dim>&                   dof_handler;
-  const Mapping<dim>&                      mapping;
-  std::string                              directory;
+  const DoFHandler<dim>& dof_handler;
+  const Mapping<dim>& mapping;
+  std::string directory;
   std::vector<std::pair<double, std::string>> pvd_records;
 };
 } // namespace dyncontact

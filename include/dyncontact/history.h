@@ -25,7 +25,7 @@ public:
   void add_row(const std::vector<double>& values);
 
   const std::vector<std::string>& column_names() const { return names; }
-  unsigned int                    n_rows() const { return rows.size(); }
+  unsigned int n_rows() const { return rows.size(); }
 
   /** All values of column `name`; throws std::out_of_range if there is no such column. */
   std::vector<double> column(const std::string& name) const;
@@ -35,10 +35,10 @@ public:
 
 private:
   unsigned int column_index(const std::string& name) const;
-  void         write_row(const std::vector<double>& values);
+  void write_row(const std::vector<double>& values);
 
-  std::vector<std::string>         names;
+  std::vector<std::string> names;
   std::vector<std::vector<double>> rows;
-  std::ofstream                    file;
+  std::ofstream file;
 };
 } // namespace dyncontact

@@ -25,13 +25,13 @@ public:
   /** F from the displacement gradient and value at reference point X. */
   virtual Tensor<2, 3> deformation_gradient(const Tensor<2, dim>& displacement_gradient,
                                             const Tensor<1, dim>& displacement,
-                                            const Point<dim>&     X) const = 0;
+                                            const Point<dim>& X) const = 0;
 
   /** dF caused by a shape function of the given vector component, value and gradient at X. */
-  virtual Tensor<2, 3> deformation_gradient_variation(unsigned int          component,
-                                                      double                shape_value,
+  virtual Tensor<2, 3> deformation_gradient_variation(unsigned int component,
+                                                      double shape_value,
                                                       const Tensor<1, dim>& shape_gradient,
-                                                      const Point<dim>&     X) const = 0;
+                                                      const Point<dim>& X) const = 0;
 
   /** Reference volume per unit dX of the dim-dimensional model (area, 2 pi r, thickness). */
   virtual double measure_factor(const Point<dim>& X, types::material_id body) const = 0;
@@ -50,12 +50,12 @@ public:
 
   Tensor<2, 3> deformation_gradient(const Tensor<2, 1>& displacement_gradient,
                                     const Tensor<1, 1>& displacement,
-                                    const Point<1>&     X) const override;
-  Tensor<2, 3> deformation_gradient_variation(unsigned int        component,
-                                              double              shape_value,
+                                    const Point<1>& X) const override;
+  Tensor<2, 3> deformation_gradient_variation(unsigned int component,
+                                              double shape_value,
                                               const Tensor<1, 1>& shape_gradient,
-                                              const Point<1>&     X) const override;
-  double       measure_factor(const Point<1>& X, types::material_id body) const override;
+                                              const Point<1>& X) const override;
+  double measure_factor(const Point<1>& X, types::material_id body) const override;
 
 private:
   std::vector<double> areas;

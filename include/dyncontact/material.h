@@ -39,13 +39,13 @@ public:
   /** Throws InputError unless E > 0 and -1 < nu < 0.5. */
   LinearElasticMaterial(double youngs_modulus, double poissons_ratio);
 
-  double       strain_energy_density(const Tensor<2, 3>& F) const override;
+  double strain_energy_density(const Tensor<2, 3>& F) const override;
   Tensor<2, 3> first_piola_kirchhoff_stress(const Tensor<2, 3>& F) const override;
   Tensor<4, 3> stress_tangent(const Tensor<2, 3>& F) const override;
 
 private:
-  double       lame_lambda;
-  double       shear_modulus;
+  double lame_lambda;
+  double shear_modulus;
   Tensor<4, 3> elasticity_tensor;
 };
 } // namespace dyncontact

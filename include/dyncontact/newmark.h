@@ -8,9 +8,22 @@
 namespace dyncontact
 {
 /**
- * The Newmark (beta, gamma) family, method.md eqs. (11)-(12), written displacement-first: the
- * predictor u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, then a_{n+1} = (u_{n+1} - u~)/(beta dt^2) and
- * v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}). It also knows the algorithmic energy
+ * The states of one completed Newmark step, t_n -> t_{n+1}, before the rates at t_{n+1} are
+ * corrected: what the modified scheme's contact correction reads.
+ */
+struct NewmarkStep
+{
+  const Vector<double>& old_displacement;
+  const Vector<double>& old_velocity;
+  const Vector<double>& old_acceleration;
+  const Vector<double>& new_displacement;
+  const Vector<double>& increment; ///< u_{n+1} - u~, the converged displacement minus the predictor
+};
+
+/**
+ * The Newmark (beta, gamma) family, eqs. (11)-(12) of the paper, written displacement-first: the
+ * predictor u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, then a_{n+1} = (u_{n+1} - u~)/(beta dt^2)
+ * and v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}). It also knows the algorithmic energy
  * weight. The modified scheme's contact correction is not here but in ContactConstraints, which
  * calls back into this class for the coefficients; assembly and solves are not here either.
  */
@@ -32,26 +45,30 @@ public:
   void predict(const Vector<double>& u_n,
                const Vector<double>& v_n,
                const Vector<double>& a_n,
-               Vector<double>&       predictor) const;
+               Vector<double>& predictor) const;
 
-  /** a_{n+1} and v_{n+1} from the converged u_{n+1} (classical update, every DoF). */
-  void update_rates(const Vector<double>& u_new,
-                    const Vector<double>& predictor,
+  /**
+   * a_{n+1} = increment / (beta dt^2) and v_{n+1} from the converged increment u_{n+1} - u~
+   * (classical update, every DoF). Working with the increment avoids the cancellation of
+   * u_{n+1} - u~, which the large factor 1/(beta dt^2) would turn into momentum drift.
+   */
+  void update_rates(const Vector<double>& increment,
                     const Vector<double>& v_n,
                     const Vector<double>& a_n,
-                    Vector<double>&       v_new,
-                    Vector<double>&       a_new) const;
+                    Vector<double>& v_new,
+                    Vector<double>& a_new) const;
 
   /**
    * 1/2 v.Mv + W(u) + (beta - 1/4) dt^2/2 a.Ma: conserved exactly by gamma = 1/2 Newmark for a
    * linear free system (the plain energy is not when beta != 1/4).
    */
-  double algorithmic_energy(double kinetic_energy, double strain_energy, double acceleration_energy) const;
+  double
+  algorithmic_energy(double kinetic_energy, double strain_energy, double acceleration_energy) const;
 
 private:
   NewmarkScheme scheme_value;
-  double        beta_value;
-  double        gamma_value;
-  double        dt;
+  double beta_value;
+  double gamma_value;
+  double dt;
 };
 } // namespace dyncontact

@@ -15,8 +15,8 @@ namespace dyncontact
 template <int dim>
 struct Node
 {
-  types::material_id                           body;
-  Point<dim>                                   position;
+  types::material_id body;
+  Point<dim> position;
   std::array<types::global_dof_index, dim> dofs;
 };
 

@@ -9,7 +9,7 @@
 
 namespace dyncontact
 {
-/** Which Newmark variant advances velocities and accelerations (method.md sections 2 and 4). */
+/** Which Newmark variant advances velocities and accelerations (paper sections 4 and 5). */
 enum class NewmarkScheme
 {
   classical, ///< plain Newmark; contact constrains displacements only
@@ -27,13 +27,13 @@ enum class ContactFormulation
 struct TimeIntegrationParameters
 {
   NewmarkScheme scheme;
-  double        beta;
-  double        gamma;
-  double        time_step;
-  double        end_time;
+  double beta;
+  double gamma;
+  double time_step;
+  double end_time;
 
   static void declare_parameters(ParameterHandler& prm);
-  void        parse_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
 };
 
 /** Contact enforcement. Subsection `Contact`. */
@@ -44,29 +44,29 @@ struct ContactParameters
   double penalty_factor;
 
   static void declare_parameters(ParameterHandler& prm);
-  void        parse_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
 };
 
 /** Convergence control of the per-step Newton / active-set loop. Subsection `Newton`. */
 struct NewtonParameters
 {
   unsigned int max_iterations;
-  double       residual_tolerance;
+  double residual_tolerance;
 
   static void declare_parameters(ParameterHandler& prm);
-  void        parse_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
 };
 
 /** One straight linear elastic bar on the x axis. Subsection `Geometry/Bar <b>`. */
 struct BarParameters
 {
-  double       left_end;
-  double       length;
+  double left_end;
+  double length;
   unsigned int n_elements;
-  double       youngs_modulus;
-  double       density;
-  double       area;
-  double       initial_velocity;
+  double youngs_modulus;
+  double density;
+  double area;
+  double initial_velocity;
 
   double right_end() const { return left_end + length; }
   double wave_speed() const;
@@ -84,33 +84,33 @@ struct BarParameters
 struct GeometryParameters
 {
   std::vector<BarParameters> bars;
-  bool                       wall_enabled;
-  double                     wall_position;
+  bool wall_enabled;
+  double wall_position;
 
   static void declare_parameters(ParameterHandler& prm, unsigned int n_bars);
-  void        parse_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
 };
 
 /** What a run writes and where. Subsection `Output`. */
 struct OutputParameters
 {
-  std::string         directory;
+  std::string directory;
   std::vector<double> profile_times;
-  unsigned int        vtu_interval;
-  bool                write_exact_solution;
+  unsigned int vtu_interval;
+  bool write_exact_solution;
 
   static void declare_parameters(ParameterHandler& prm);
-  void        parse_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
 };
 
 /** Every setting of one run, grouped by prm subsection. */
 struct RunParameters
 {
   TimeIntegrationParameters time;
-  ContactParameters         contact;
-  NewtonParameters          newton;
-  GeometryParameters        geometry;
-  OutputParameters          output;
+  ContactParameters contact;
+  NewtonParameters newton;
+  GeometryParameters geometry;
+  OutputParameters output;
 };
 
 /**
@@ -140,10 +140,10 @@ public:
   static void print_documentation(std::ostream& out);
 
 private:
-  std::string              input_filename;
-  std::string              input_text;
+  std::string input_filename;
+  std::string input_text;
   std::vector<std::string> overrides;
-  ParameterHandler         prm;
-  RunParameters            run_parameters;
+  ParameterHandler prm;
+  RunParameters run_parameters;
 };
 } // namespace dyncontact

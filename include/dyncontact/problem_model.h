@@ -55,8 +55,8 @@ public:
    * Writes the model's independent reference solution (e.g. exact.csv) into `directory`, sampled
    * at `times`, for the given monitor nodes. The default writes nothing.
    */
-  virtual void write_reference(const std::string&            directory,
-                               const std::vector<double>&    times,
+  virtual void write_reference(const std::string& directory,
+                               const std::vector<double>& times,
                                const std::vector<Node<dim>>& monitors) const;
 
   /** A few lines describing the problem (sizes, wave speeds, Courant numbers). */

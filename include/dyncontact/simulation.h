@@ -35,7 +35,9 @@ class Simulation
 {
 public:
   /** `log` receives the progress report (std::cout for the executable). */
-  Simulation(const RunParameters& parameters, std::unique_ptr<ProblemModel<dim>> model, std::ostream& log);
+  Simulation(const RunParameters& parameters,
+             std::unique_ptr<ProblemModel<dim>> model,
+             std::ostream& log);
 
   /**
    * Runs from t = 0 to the end time. Output/directory must exist. Throws SolverFailure if a step
@@ -49,37 +51,45 @@ public:
   /** Lumped nodal masses per DoF. */
   const Vector<double>& lumped_mass() const { return mass; }
 
+  /** All nodes (body, reference position, DoFs); valid after run(). */
+  const std::vector<Node<dim>>& all_nodes() const { return nodes->nodes(); }
+
+  /** State at the last completed step; valid after run(). */
+  const Vector<double>& current_displacement() const { return displacement; }
+  const Vector<double>& current_velocity() const { return velocity; }
+  const Vector<double>& current_acceleration() const { return acceleration; }
+
   /** The node whose motion is recorded as u_tip_<b>, v_tip_<b>, a_tip_<b>, per body. */
   const std::vector<Node<dim>>& monitor_nodes() const { return monitors; }
 
 private:
-  void                     setup();
-  void                     warn_about_penalty_stability() const;
-  void                     set_initial_conditions();
-  unsigned int             do_time_step();
-  void                     record_step(unsigned int step, unsigned int linear_solves);
+  void setup();
+  void warn_about_penalty_stability() const;
+  void set_initial_conditions();
+  unsigned int do_time_step();
+  void record_step(unsigned int step, unsigned int linear_solves);
   std::vector<std::string> history_columns() const;
 
-  const RunParameters                       parameters;
-  const std::unique_ptr<ProblemModel<dim>>  model;
-  std::ostream&                             log;
-  const Newmark                             newmark;
-  Triangulation<dim>                        triangulation;
-  const FESystem<dim>                       fe;
-  const MappingQ<dim>                       mapping;
-  DoFHandler<dim>                           dof_handler;
-  std::unique_ptr<NodeIndex<dim>>           nodes;
-  std::unique_ptr<Kinematics<dim>>          kinematics;
-  std::unique_ptr<ElasticBodies<dim>>       bodies;
-  Vector<double>                            mass;
-  std::unique_ptr<ContactConstraints<dim>>  contact;
+  const RunParameters parameters;
+  const std::unique_ptr<ProblemModel<dim>> model;
+  std::ostream& log;
+  const Newmark newmark;
+  Triangulation<dim> triangulation;
+  const FESystem<dim> fe;
+  const MappingQ<dim> mapping;
+  DoFHandler<dim> dof_handler;
+  std::unique_ptr<NodeIndex<dim>> nodes;
+  std::unique_ptr<Kinematics<dim>> kinematics;
+  std::unique_ptr<ElasticBodies<dim>> bodies;
+  Vector<double> mass;
+  std::unique_ptr<ContactConstraints<dim>> contact;
   std::unique_ptr<ContactNewtonSolver<dim>> solver;
-  std::vector<Node<dim>>                    monitors;
-  std::unique_ptr<FieldOutput<dim>>         field_output;
-  std::map<unsigned int, double>            profile_steps; ///< step -> requested profile time
-  unsigned int                              n_steps;
-  double                                    time;
-  Vector<double>                            displacement, velocity, acceleration;
-  History                                   step_history;
+  std::vector<Node<dim>> monitors;
+  std::unique_ptr<FieldOutput<dim>> field_output;
+  std::map<unsigned int, double> profile_steps; ///< step -> requested profile time
+  unsigned int n_steps;
+  double time;
+  Vector<double> displacement, velocity, acceleration;
+  History step_history;
 };
 } // namespace dyncontact

@@ -1,0 +1,83 @@
+#include "bar_run.h"
+
+#include <dyncontact/bar_model.h>
+#include <dyncontact/command_line.h>
+
+#include <filesystem>
+#include <gtest/gtest.h>
+#include <sstream>
+#include <unistd.h>
+
+namespace dyncontact::testing
+{
+std::string source_path(const std::string& relative_path)
+{
+  return std::string(DYNCONTACT_SOURCE_DIR) + "/" + relative_path;
+}
+
+double BarRun::exact_contact_force(const double t) const
+{
+  double force = 0.;
+  for (unsigned int i = 0; i < exact->n_interfaces(); ++i)
+    force += exact->contact_force(i, t);
+  return force;
+}
+
+BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>& overrides)
+{
+  const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::ostringstream directory;
+  directory << std::filesystem::temp_directory_path().string() << "/dyncontact-tests/"
+            << (test ? std::string(test->test_suite_name()) + "." + test->name() : "run") << "-"
+            << ::getpid() << "-"
+            << std::hash<std::string>()(prm_file + std::to_string(overrides.size()));
+  std::vector<std::string> all_overrides = overrides;
+  all_overrides.insert(all_overrides.end(),
+                       {"Output/directory=" + directory.str(),
+                        "Output/vtu interval=0",
+                        "Output/write exact solution=false"});
+  const ParameterReader reader(source_path(prm_file), all_overrides);
+
+  BarRun run;
+  run.parameters = reader.parameters();
+  prepare_output_directory(run.parameters.output.directory);
+  std::ostringstream log;
+  run.simulation = std::make_unique<Simulation<1>>(
+      run.parameters,
+      std::make_unique<BarModel>(run.parameters.geometry, run.parameters.contact),
+      log);
+  run.simulation->run();
+
+  run.exact = std::make_unique<ExactBarSolution>(
+      BarModel(run.parameters.geometry, run.parameters.contact)
+          .exact_solution(run.parameters.time.end_time + run.parameters.time.time_step));
+  std::filesystem::remove_all(directory.str());
+  return run;
+}
+
+std::vector<unsigned int> contact_samples(const BarRun& run)
+{
+  const auto intervals   = run.exact->contact_intervals(0);
+  const double start     = intervals.front().first;
+  const double end       = intervals.front().second;
+  const double left_side = 1e-6 * run.time_step();
+  const auto times       = run.history().column("time");
+
+  std::vector<unsigned int> samples;
+  for (unsigned int row = 0; row < times.size(); ++row)
+  {
+    const double t = times[row];
+    if (!(t > start + left_side && t < end - left_side))
+      continue;
+    bool at_jump =
+        std::abs(run.exact_contact_force(t) - run.exact_contact_force(t - left_side)) > 1e-12;
+    for (unsigned int b = 0; b < run.exact->n_bars(); ++b)
+      at_jump =
+          at_jump || std::abs(run.exact->velocity(b, run.tip_position(b), t) -
+                              run.exact->velocity(b, run.tip_position(b), t - left_side)) > 1e-12;
+    if (!at_jump)
+      samples.push_back(row);
+  }
+  return samples;
+}
+} // namespace dyncontact::testing

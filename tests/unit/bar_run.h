@@ -1,0 +1,49 @@
+#pragma once
+// Test support: runs a shipped bar prm in-process and pairs it with its exact solution.
+
+#include <dyncontact/exact_bar_solution.h>
+#include <dyncontact/parameters.h>
+#include <dyncontact/simulation.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dyncontact::testing
+{
+/** Path of a file in the source tree, e.g. "prm/bar_rigid_wall.prm". */
+std::string source_path(const std::string& relative_path);
+
+/** A finished bar run and the exact solution of the same problem. */
+struct BarRun
+{
+  RunParameters parameters;
+  std::unique_ptr<Simulation<1>> simulation;
+  std::unique_ptr<ExactBarSolution> exact;
+
+  const History& history() const { return simulation->history(); }
+  double time_step() const { return parameters.time.time_step; }
+  /** Reference x of the tip (monitor node) of body b (0-based). */
+  double tip_position(unsigned int body) const
+  {
+    return simulation->monitor_nodes()[body].position[0];
+  }
+  /** Exact total contact force (all interfaces) at t, right-continuous. */
+  double exact_contact_force(double t) const;
+};
+
+/**
+ * Runs `prm_file` (relative to the source tree) with the overrides applied after the file,
+ * writing into a fresh temporary directory without VTU or exact.csv (the tests evaluate the exact
+ * solution directly).
+ */
+BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
+
+/**
+ * History rows strictly inside the exact contact interval (first interface), minus the samples
+ * taken exactly at a jump of the exact tip velocities or contact force. At such an instant the
+ * exact solution is a step seen from one side (right-continuous) while the discrete solution is
+ * in transit, so neither side's value is a meaningful reference; there is one such sample per jump.
+ */
+std::vector<unsigned int> contact_samples(const BarRun& run);
+} // namespace dyncontact::testing
