@@ -16,6 +16,9 @@ int main(int argc, char** argv)
   Utilities::MPI::MPI_InitFinalize mpi_initialization(argc, argv, 1);
   try
   {
+    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+      throw InputError("the 1D bar problems run on one MPI rank; start dyncontact without mpirun "
+                       "(or with -np 1).");
     const CommandLine command_line =
         CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
     switch (command_line.action)

@@ -177,6 +177,14 @@ void BarModel::write_reference(const std::string& directory,
   }
 }
 
+double BarModel::highest_frequency() const
+{
+  double frequency = 0.;
+  for (const auto& bar : geometry.bars)
+    frequency = std::max(frequency, 2. * bar.wave_speed() / bar.element_length());
+  return frequency;
+}
+
 ExactBarSolution BarModel::exact_solution(const double end_time) const
 {
   std::vector<ExactBar> bars;

@@ -33,14 +33,12 @@ template <int dim>
 double ContactConstraints<dim>::gap(const unsigned int pair_index,
                                     const Vector<double>& displacement) const
 {
+  // Reference gap plus relative displacement, never absolute positions: translating a problem
+  // must not cost digits.
   const ContactPair<dim>& pair = pairs[pair_index];
-  const double x_a =
-      pair.normal * pair.node_a.position + normal_component(pair.node_a, pair.normal, displacement);
-  const double x_b = pair.against_wall()
-                         ? pair.normal * pair.wall_point
-                         : pair.normal * pair.node_b->position +
-                               normal_component(*pair.node_b, pair.normal, displacement);
-  return x_b - x_a;
+  const double u_b =
+      pair.against_wall() ? 0. : normal_component(*pair.node_b, pair.normal, displacement);
+  return pair.reference_gap() + u_b - normal_component(pair.node_a, pair.normal, displacement);
 }
 
 template <int dim>
@@ -165,11 +163,9 @@ void ContactConstraints<dim>::apply_rate_correction(const Newmark& newmark,
           pair.against_wall() ? 0. : normal_component(*pair.node_b, normal, field);
       return side_b - normal_component(pair.node_a, normal, field);
     };
-    // Eq. (21) assumes the pair is closed at t_{n+1}; its numerator [[X + u_n]] is written here as
-    // g_n - g_{n+1}, identical for Lagrange multipliers (g_{n+1} = 0). With a penalty the pair
-    // penetrates (g_{n+1} < 0) and the literal (21) would leave [[a_{n+1}]] = g_{n+1}/(beta dt^2),
-    // which feeds the penetration back into the rates and grows without bound; this form keeps
-    // [[a_{n+1}]] = 0, the rate condition (10) of persistent contact, for both formulations.
+    // Eq. (21) holds for a pair closed at t_{n+1}, where its numerator's [[X + u_n]] equals
+    // g_n - g_{n+1}; the latter keeps [[a_{n+1}]] = 0 exact even for the residual gap Newton leaves
+    // within its tolerance (the literal form would leave [[a_{n+1}]] = g_{n+1} / (beta dt^2)).
     const double position_jump = gap(k, step.old_displacement) - gap(k, step.new_displacement);
     const double mass_a        = lumped_mass[pair.node_a.dofs[0]];
     const double inverse_weight_sum =

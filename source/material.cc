@@ -17,10 +17,10 @@ LinearElasticMaterial::LinearElasticMaterial(const double youngs_modulus,
                                              const double poissons_ratio)
 {
   if (!(youngs_modulus > 0.))
-    throw InputError("Young's modulus must be > 0 (got " + std::to_string(youngs_modulus) + ").");
+    throw InputError("Young's modulus must be > 0 (got " + format_number(youngs_modulus) + ").");
   if (!(poissons_ratio > -1. && poissons_ratio < 0.5))
-    throw InputError("Poisson's ratio must lie in (-1, 0.5) (got " +
-                     std::to_string(poissons_ratio) + ").");
+    throw InputError("Poisson's ratio must lie in (-1, 0.5) (got " + format_number(poissons_ratio) +
+                     ").");
   lame_lambda =
       youngs_modulus * poissons_ratio / ((1. + poissons_ratio) * (1. - 2. * poissons_ratio));
   shear_modulus = youngs_modulus / (2. * (1. + poissons_ratio));

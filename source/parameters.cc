@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace dyncontact
@@ -81,6 +82,26 @@ void apply_override(ParameterHandler& prm, const std::string& text, const bool i
     prm.leave_subsection();
 }
 
+/**
+ * ParameterHandler's internal path "Geometry.Bar_202.left_20end" back to what the user writes,
+ * "Geometry/Bar 2/left end": '.' separates subsections and "_xx" is the hex code of a character.
+ */
+std::string demangle_entry_path(const std::string& mangled)
+{
+  std::string path;
+  for (unsigned int i = 0; i < mangled.size(); ++i)
+    if (mangled[i] == '.')
+      path += '/';
+    else if (mangled[i] == '_' && i + 2 < mangled.size())
+    {
+      path += static_cast<char>(std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    }
+    else
+      path += mangled[i];
+  return path;
+}
+
 std::string bar_section(const unsigned int bar)
 {
   return "Bar " + std::to_string(bar + 1);
@@ -151,7 +172,16 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
                      "0 < beta <= 0.5 (the paper's nearly explicit choice is 0.001).");
   time_step = get_positive(prm, "time step", "Time integration");
   end_time  = get_positive(prm, "end time", "Time integration");
+  if (end_time / time_step > 1e8)
+    throw InputError("Time integration/end time = " + prm.get("end time") +
+                     " with time step = " + prm.get("time step") +
+                     " asks for more than 1e8 steps; at most 1e8 are allowed.");
   prm.leave_subsection();
+}
+
+unsigned int TimeIntegrationParameters::n_steps() const
+{
+  return static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9));
 }
 
 void ContactParameters::declare_parameters(ParameterHandler& prm)
@@ -187,9 +217,10 @@ void NewtonParameters::declare_parameters(ParameterHandler& prm)
   prm.enter_subsection("Newton");
   prm.declare_entry("maximum iterations",
                     "25",
-                    Patterns::Integer(1, 1000),
+                    Patterns::Integer(2, 1000),
                     "Maximum number of linear solves per time step, including the re-solves "
-                    "after active-set changes [-], 1..1000. Exceeding it stops the run with a "
+                    "after active-set changes [-], 2..1000 (an active-set change needs two). "
+                    "Exceeding it stops the run with a "
                     "message; the output written so far is kept.");
   prm.declare_entry("residual tolerance",
                     "1e-10",
@@ -214,21 +245,24 @@ double BarParameters::wave_speed() const
 
 void BarParameters::declare_parameters(ParameterHandler& prm)
 {
+  // Every entry of a bar must be given: a bar the user forgot must not appear with defaults.
   prm.declare_entry(
-      "left end", "0", Patterns::Double(), "x of the bar's left end at t = 0 [length].");
-  prm.declare_entry("length", "10", Patterns::Double(0.), "Bar length L [length], > 0.");
+      "left end", "0", Patterns::Double(), "x of the bar's left end at t = 0 [length].", true);
+  prm.declare_entry("length", "10", Patterns::Double(0.), "Bar length L [length], > 0.", true);
   prm.declare_entry("number of elements",
                     "100",
                     Patterns::Integer(1, 10000000),
-                    "Number of equal 2-node linear elements along the bar [-], >= 1.");
-  prm.declare_entry("Young's modulus", "1", Patterns::Double(0.), "E [force/length^2], > 0.");
-  prm.declare_entry("density", "1", Patterns::Double(0.), "rho [mass/length^3], > 0.");
-  prm.declare_entry("cross-section area", "1", Patterns::Double(0.), "A [length^2], > 0.");
+                    "Number of equal 2-node linear elements along the bar [-], >= 1.",
+                    true);
+  prm.declare_entry("Young's modulus", "1", Patterns::Double(0.), "E [force/length^2], > 0.", true);
+  prm.declare_entry("density", "1", Patterns::Double(0.), "rho [mass/length^3], > 0.", true);
+  prm.declare_entry("cross-section area", "1", Patterns::Double(0.), "A [length^2], > 0.", true);
   prm.declare_entry("initial velocity",
                     "0",
                     Patterns::Double(),
                     "Uniform velocity along +x at t = 0 [length/time]; the bar starts "
-                    "stress-free.");
+                    "stress-free.",
+                    true);
 }
 
 void BarParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
@@ -289,16 +323,16 @@ void GeometryParameters::parse_parameters(ParameterHandler& prm)
     for (unsigned int b = a + 1; b < n_bars; ++b)
       if (bars[a].left_end < bars[b].right_end() && bars[b].left_end < bars[a].right_end())
         throw InputError(
-            "Geometry: Bar " + std::to_string(a + 1) + " [" + std::to_string(bars[a].left_end) +
-            ", " + std::to_string(bars[a].right_end()) + "] and Bar " + std::to_string(b + 1) +
-            " [" + std::to_string(bars[b].left_end) + ", " + std::to_string(bars[b].right_end()) +
+            "Geometry: Bar " + std::to_string(a + 1) + " [" + format_number(bars[a].left_end) +
+            ", " + format_number(bars[a].right_end()) + "] and Bar " + std::to_string(b + 1) +
+            " [" + format_number(bars[b].left_end) + ", " + format_number(bars[b].right_end()) +
             "] overlap at t = 0; bars may touch but not overlap.");
   if (wall_enabled)
     for (unsigned int bar = 0; bar < n_bars; ++bar)
       if (bars[bar].right_end() > wall_position)
-        throw InputError("Geometry/Rigid wall/position = " + std::to_string(wall_position) +
+        throw InputError("Geometry/Rigid wall/position = " + format_number(wall_position) +
                          " lies inside Bar " + std::to_string(bar + 1) + " (right end " +
-                         std::to_string(bars[bar].right_end()) +
+                         format_number(bars[bar].right_end()) +
                          "); the wall faces -x, so every bar must lie at x <= position.");
 }
 
@@ -379,6 +413,16 @@ ParameterReader::ParameterReader(const std::string& filename,
 
   try
   {
+    const std::set<std::string> missing = prm.get_entries_wrongly_not_set();
+    if (!missing.empty())
+    {
+      std::string names;
+      for (const auto& path : missing)
+        names += (names.empty() ? "" : ", ") + demangle_entry_path(path);
+      throw InputError("parameter file '" + filename + "': " + names +
+                       (missing.size() > 1 ? " are" : " is") +
+                       " not set; every entry of every bar must be given.");
+    }
     run_parameters.time.parse_parameters(prm);
     run_parameters.contact.parse_parameters(prm);
     run_parameters.newton.parse_parameters(prm);
@@ -389,6 +433,19 @@ ParameterReader::ParameterReader(const std::string& filename,
   {
     throw InputError("parameter file '" + filename + "': " + exception_text(exception));
   }
+  check_consistency();
+}
+
+void ParameterReader::check_consistency() const
+{
+  const RunParameters& p = run_parameters;
+  if (p.contact.formulation == ContactFormulation::penalty &&
+      p.time.scheme == NewmarkScheme::modified)
+    throw InputError(
+        "Contact/formulation = penalty cannot be combined with Time integration/scheme = modified: "
+        "the rate correction assumes exactly closed pairs; a penalized pair stays penetrated and "
+        "the correction glues it (the bars of case 6.2 never separate). Use the classical scheme "
+        "with a penalty, or Lagrange multipliers with the modified scheme.");
 }
 
 void ParameterReader::write_records(const std::string& directory) const

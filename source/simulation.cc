@@ -31,7 +31,7 @@ std::vector<std::string> Simulation<dim>::history_columns() const
                                       "strain_energy",
                                       "total_energy",
                                       "algorithmic_energy"};
-  for (unsigned int b = 1; b <= model->body_materials().size(); ++b)
+  for (unsigned int b = 1; b <= model->n_bodies(); ++b)
     for (const std::string quantity : {"momentum_", "u_tip_", "v_tip_", "a_tip_"})
       columns.push_back(quantity + std::to_string(b));
   return columns;
@@ -60,10 +60,14 @@ void Simulation<dim>::setup()
   monitors = model->monitor_nodes(*nodes);
 
   const double dt = parameters.time.time_step;
-  n_steps         = static_cast<unsigned int>(std::ceil(parameters.time.end_time / dt - 1e-9));
+  n_steps         = parameters.time.n_steps();
   for (const double profile_time : parameters.output.profile_times)
-    if (profile_time <= n_steps * dt)
-      profile_steps[static_cast<unsigned int>(std::lround(profile_time / dt))] = profile_time;
+    if (profile_time > (n_steps + 0.5) * dt)
+      log << "WARNING: Output/profile times: " << profile_time
+          << " lies after the end of the run (t = " << n_steps * dt
+          << "); no profile is written for it.\n";
+    else
+      profile_steps.insert(static_cast<unsigned int>(std::lround(profile_time / dt)));
 
   log << "dyncontact: " << dof_handler.n_dofs() << " displacement DoFs, " << contact->n_pairs()
       << " contact candidate(s), " << n_steps << " steps of dt = " << dt << ", "
@@ -72,21 +76,34 @@ void Simulation<dim>::setup()
       << (parameters.contact.formulation == ContactFormulation::penalty ? "penalty"
                                                                         : "Lagrange multiplier")
       << " contact\n";
+  if (std::abs(n_steps * dt - parameters.time.end_time) > 1e-9 * parameters.time.end_time)
+    log << "  note: end time " << parameters.time.end_time
+        << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
   model->print_summary(log, dt);
-  warn_about_penalty_stability();
+  warn_about_stability();
 }
 
 template <int dim>
-void Simulation<dim>::warn_about_penalty_stability() const
+void Simulation<dim>::warn_about_stability() const
 {
-  // With 2 beta < gamma Newmark is stable only for omega dt <= 1/sqrt(gamma/2 - beta); a penalty
-  // spring between two lumped masses has omega = sqrt(eps / m_reduced). The modified scheme
-  // replaces the contact nodes' normal rates every step and stays bounded beyond this limit (seen
-  // on the bar cases up to factor 1e4), so only the classical scheme is warned about.
-  if (parameters.contact.formulation != ContactFormulation::penalty ||
-      newmark.scheme() == NewmarkScheme::modified || 2. * newmark.beta() >= newmark.gamma())
+  // With 2 beta < gamma Newmark is stable only for omega dt <= 1/sqrt(gamma/2 - beta). The
+  // bodies' highest frequency and, for the penalty, the spring between two lumped masses,
+  // omega = sqrt(eps / m_reduced), must both stay below it.
+  if (2. * newmark.beta() >= newmark.gamma())
     return;
   const double limit = 1. / std::sqrt(newmark.gamma() / 2. - newmark.beta());
+  const auto warn = [&](const std::string& what, const double omega_dt, const std::string& remedy)
+  {
+    log << "WARNING: " << what << " has omega dt = " << omega_dt << ", above the stability limit "
+        << limit << " of Newmark with beta = " << newmark.beta() << ", gamma = " << newmark.gamma()
+        << "; expect the solution to blow up. Use 2 beta >= gamma, a smaller time step" << remedy
+        << ".\n";
+  };
+  const double body_omega_dt = model->highest_frequency() * newmark.time_step();
+  if (body_omega_dt > limit * (1. + 1e-12))
+    warn("the mesh's highest mode", body_omega_dt, "");
+  if (parameters.contact.formulation != ContactFormulation::penalty)
+    return;
   for (const auto& pair : contact->candidate_pairs())
   {
     const double mass_a   = mass[pair.node_a.dofs[0]];
@@ -96,11 +113,7 @@ void Simulation<dim>::warn_about_penalty_stability() const
     const double omega_dt = newmark.time_step() * std::sqrt(pair.penalty_stiffness / reduced);
     if (omega_dt > limit)
     {
-      log << "WARNING: Contact/penalty factor: the penalty spring has omega dt = " << omega_dt
-          << ", above the stability limit " << limit << " of Newmark with beta = " << newmark.beta()
-          << ", gamma = " << newmark.gamma()
-          << "; expect the contact to blow up. Use 2 beta >= gamma, a smaller time step or a "
-             "smaller penalty factor.\n";
+      warn("the penalty spring (Contact/penalty factor)", omega_dt, " or a smaller penalty factor");
       return;
     }
   }
@@ -189,9 +202,8 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
 
   if (parameters.output.vtu_interval > 0 && step % parameters.output.vtu_interval == 0)
     field_output->write_fields(step, time, displacement, velocity, acceleration);
-  if (const auto profile = profile_steps.find(step); profile != profile_steps.end())
-    field_output->write_profile(
-        profile->second, nodes->nodes(), displacement, velocity, acceleration);
+  if (profile_steps.count(step) > 0)
+    field_output->write_profile(time, nodes->nodes(), displacement, velocity, acceleration);
 }
 
 template <int dim>
@@ -224,13 +236,19 @@ void Simulation<dim>::run()
     }
     catch (const SolverFailure& failure)
     {
-      throw SolverFailure("step " + std::to_string(step) + " (t = " + std::to_string(time) +
+      throw SolverFailure("step " + std::to_string(step) + " (t = " + format_number(time) +
                           "): " + failure.what() +
-                          " Results up to t = " + std::to_string(time - parameters.time.time_step) +
+                          " Results up to t = " + format_number(time - parameters.time.time_step) +
                           " are in " + directory + ".");
     }
     total_solves += linear_solves;
     record_step(step, linear_solves);
+    if (!std::isfinite(step_history.value(step, "algorithmic_energy")))
+      throw SolverFailure("step " + std::to_string(step) + " (t = " + format_number(time) +
+                          "): the solution is no longer finite; the time integration is unstable "
+                          "(see the stability warning at start, if any). Results up to this step "
+                          "are in " +
+                          directory + ".");
     if (step % report_interval == 0 || contact->n_active() != active_before)
       log << "  step " << std::setw(6) << step << "  t = " << std::setw(10) << time
           << "  active pairs " << contact->n_active() << "  linear solves " << linear_solves

@@ -20,6 +20,9 @@ public:
   BarModel(const GeometryParameters& geometry, const ContactParameters& contact);
 
   unsigned int element_degree() const override { return 1; }
+  unsigned int n_bodies() const override { return geometry.bars.size(); }
+  /** max over the bars of 2 c / h, the highest frequency of a lumped-mass 2-node bar mesh. */
+  double highest_frequency() const override;
   void create_triangulation(Triangulation<1>& triangulation) const override;
   std::vector<BodyMaterial> body_materials() const override;
   std::unique_ptr<Kinematics<1>> create_kinematics() const override;

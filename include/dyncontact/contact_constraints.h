@@ -30,6 +30,12 @@ struct ContactPair
   double penalty_stiffness; ///< used by the penalty formulation only
 
   bool against_wall() const { return !node_b.has_value(); }
+
+  /** n . (X_B - X_A), or n . (wall point - X_A): the gap at zero displacement. */
+  double reference_gap() const
+  {
+    return normal * ((against_wall() ? wall_point : node_b->position) - node_a.position);
+  }
 };
 
 /**
@@ -55,8 +61,6 @@ public:
   const std::vector<ContactPair<dim>>& candidate_pairs() const { return pairs; }
   unsigned int n_active() const;
   bool is_active(unsigned int pair) const { return active[pair]; }
-  /// multipliers, one per candidate, compression positive (zero for inactive pairs)
-  const Vector<double>& multipliers() const { return multiplier_values; }
 
   /** Gap of candidate `pair` at displacement u (negative = penetration). */
   double gap(unsigned int pair, const Vector<double>& displacement) const;

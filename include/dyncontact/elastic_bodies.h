@@ -53,9 +53,6 @@ public:
   /** Total strain energy, the integral of W(F) over all bodies. */
   double strain_energy(const Vector<double>& displacement) const;
 
-  /** Number of bodies. */
-  unsigned int n_bodies() const { return bodies.size(); }
-
 private:
   /** One pass over all quadrature points filling whichever of the outputs is not null. */
   void integrate(const Vector<double>& displacement,

@@ -1,5 +1,4 @@
-#ifndef dyncontact_exact_bar_solution_h
-#define dyncontact_exact_bar_solution_h
+#pragma once
 
 #include <functional>
 #include <optional>
@@ -230,5 +229,3 @@ private:
   double signal_tolerance;
 };
 } // namespace dyncontact
-
-#endif

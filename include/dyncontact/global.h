@@ -2,6 +2,7 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,14 @@
 namespace dyncontact
 {
 using namespace dealii;
+
+/** A number as a user wants to read it in a message: %g style, 6 significant digits. */
+inline std::string format_number(const double value)
+{
+  std::ostringstream text;
+  text << value;
+  return text.str();
+}
 
 /**
  * A problem the user caused and can fix: a bad parameter value, an unreadable file, an output

@@ -32,6 +32,9 @@ struct TimeIntegrationParameters
   double time_step;
   double end_time;
 
+  /** Number of steps: end time / time step, rounded up (the last step may end past end time). */
+  unsigned int n_steps() const;
+
   static void declare_parameters(ParameterHandler& prm);
   void parse_parameters(ParameterHandler& prm);
 };
@@ -140,6 +143,9 @@ public:
   static void print_documentation(std::ostream& out);
 
 private:
+  /** Checks across subsections (scheme vs formulation). */
+  void check_consistency() const;
+
   std::string input_filename;
   std::string input_text;
   std::vector<std::string> overrides;

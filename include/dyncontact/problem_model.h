@@ -33,6 +33,15 @@ public:
   /** All bodies in one triangulation, material id b = body b (0-based). */
   virtual void create_triangulation(Triangulation<dim>& triangulation) const = 0;
 
+  /** Number of bodies. */
+  virtual unsigned int n_bodies() const = 0;
+
+  /**
+   * An upper bound of the highest natural frequency (rad/time) of the discretized bodies with the
+   * lumped mass; explicit-like Newmark (2 beta < gamma) is stable only for omega dt below a limit.
+   */
+  virtual double highest_frequency() const = 0;
+
   /** Material and density of every body, indexed by material id. */
   virtual std::vector<BodyMaterial> body_materials() const = 0;
 

@@ -17,9 +17,9 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
-#include <map>
 #include <memory>
 #include <ostream>
+#include <set>
 
 namespace dyncontact
 {
@@ -57,14 +57,13 @@ public:
   /** State at the last completed step; valid after run(). */
   const Vector<double>& current_displacement() const { return displacement; }
   const Vector<double>& current_velocity() const { return velocity; }
-  const Vector<double>& current_acceleration() const { return acceleration; }
 
   /** The node whose motion is recorded as u_tip_<b>, v_tip_<b>, a_tip_<b>, per body. */
   const std::vector<Node<dim>>& monitor_nodes() const { return monitors; }
 
 private:
   void setup();
-  void warn_about_penalty_stability() const;
+  void warn_about_stability() const;
   void set_initial_conditions();
   unsigned int do_time_step();
   void record_step(unsigned int step, unsigned int linear_solves);
@@ -86,7 +85,7 @@ private:
   std::unique_ptr<ContactNewtonSolver<dim>> solver;
   std::vector<Node<dim>> monitors;
   std::unique_ptr<FieldOutput<dim>> field_output;
-  std::map<unsigned int, double> profile_steps; ///< step -> requested profile time
+  std::set<unsigned int> profile_steps; ///< steps at which a profile is written
   unsigned int n_steps;
   double time;
   Vector<double> displacement, velocity, acceleration;

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <gtest/gtest.h>
+#include <numeric>
 #include <sstream>
 #include <unistd.h>
 
@@ -30,7 +31,8 @@ BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>&
   directory << std::filesystem::temp_directory_path().string() << "/dyncontact-tests/"
             << (test ? std::string(test->test_suite_name()) + "." + test->name() : "run") << "-"
             << ::getpid() << "-"
-            << std::hash<std::string>()(prm_file + std::to_string(overrides.size()));
+            << std::hash<std::string>()(
+                   prm_file + std::accumulate(overrides.begin(), overrides.end(), std::string()));
   std::vector<std::string> all_overrides = overrides;
   all_overrides.insert(all_overrides.end(),
                        {"Output/directory=" + directory.str(),

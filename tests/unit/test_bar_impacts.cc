@@ -205,8 +205,9 @@ TEST(BarImpacts, AlgorithmicEnergyIsConservedAndImpactRemovesReducedMassEnergy)
     const auto energy   = run.history().column("algorithmic_energy");
     const auto active   = run.history().column("active_constraints");
     unsigned int impact = 0;
-    while (active[impact] == 0.)
+    while (impact < active.size() && active[impact] == 0.)
       ++impact;
+    ASSERT_LT(impact, active.size()) << "no contact in " << test_case.prm_file;
     double drift = 0.;
     for (unsigned int row = 1; row < energy.size(); ++row)
       if ((active[row] == 0. && row < impact) || (active[row] > 0. && active[row - 1] > 0.))
@@ -252,47 +253,83 @@ namespace dyncontact::testing
 {
 namespace
 {
-/** RMS over the exact contact interval of the penalty force minus the multiplier force. */
-double penalty_force_difference(const std::vector<std::string>& overrides,
-                                const std::string& penalty_factor)
-{
-  const BarRun multiplier = run_bar_case(identical, overrides);
-  auto penalty_overrides  = overrides;
-  penalty_overrides.insert(
-      penalty_overrides.end(),
-      {"Contact/formulation=penalty", "Contact/penalty factor=" + penalty_factor});
-  const BarRun penalty    = run_bar_case(identical, penalty_overrides);
-  const auto rows         = contact_samples(multiplier);
-  const auto f_multiplier = multiplier.history().column("contact_force");
-  const auto f_penalty    = penalty.history().column("contact_force");
-  double sum              = 0.;
-  for (const unsigned int row : rows)
-    sum += std::pow(f_penalty[row] - f_multiplier[row], 2);
-  return std::sqrt(sum / rows.size());
-}
+/** Classical Newmark with gamma = 0.7 and beta = (gamma + 1/2)^2 / 4: Hughes et al.'s dissipation.
+ */
+const std::vector<std::string> dissipative_classical = {"Time integration/scheme=classical",
+                                                        "Time integration/gamma=0.7",
+                                                        "Time integration/beta=0.36"};
 } // namespace
 
-// H: the penalty force eps <-g> converges to the multiplier force as eps grows, with an error of
-// order 1/eps. At the paper's beta = 0.001 the error must fall monotonically over three decades
-// and by at least 10x in all; at beta = 1/4 (no nearly-explicit dispersion mixed in) each decade
-// must gain at least a factor 8 (first order with a 20% margin).
+// H: the penalty force eps <-g> converges to the multiplier force as eps grows, at O(1/eps). The
+// penalty runs with the classical scheme (the modified one assumes exactly closed pairs and is
+// rejected with a penalty). Undamped classical Newmark makes the multiplier solution chatter (the
+// paper's point), so both runs use gamma = 0.7 (Hughes et al.'s remedy), which leaves a smooth
+// multiplier reference. Bounds: the RMS difference inside the contact interval falls at every
+// decade of the factor 10..1e4, by at least 100x over the three decades 10 -> 1e4 (first order
+// would give 1000x; the first decade is still pre-asymptotic), and release and final momenta match
+// the multiplier run within 0.01.
 TEST(BarImpacts, PenaltyForceApproachesMultiplierForceAsPenaltyGrows)
 {
-  for (const auto& [overrides, per_decade_gain, total_gain] :
-       std::vector<std::tuple<std::vector<std::string>, double, double>>{
-           {{}, 1., 10.}, {{"Time integration/beta=0.25"}, 8., 512.}})
+  const BarRun multiplier = run_bar_case(identical, dissipative_classical);
+  const auto rows         = contact_samples(multiplier);
+  const auto reference    = multiplier.history().column("contact_force");
+  std::vector<double> errors;
+  for (const std::string factor : {"10", "100", "1000", "10000"})
   {
-    std::vector<double> errors;
-    for (const std::string factor : {"10", "100", "1000", "10000"})
+    auto overrides = dissipative_classical;
+    overrides.insert(overrides.end(),
+                     {"Contact/formulation=penalty", "Contact/penalty factor=" + factor});
+    const BarRun penalty = run_bar_case(identical, overrides);
+    const auto force     = penalty.history().column("contact_force");
+    double sum           = 0.;
+    for (const unsigned int row : rows)
+      sum += std::pow(force[row] - reference[row], 2);
+    errors.push_back(std::sqrt(sum / rows.size()));
+    std::cout << "  penalty factor " << factor
+              << ": RMS(F_penalty - F_multiplier) = " << errors.back() << ", final momenta "
+              << penalty.history().column("momentum_1").back() << ", "
+              << penalty.history().column("momentum_2").back() << "\n";
+    for (const std::string body : {"1", "2"})
+      EXPECT_NEAR(penalty.history().column("momentum_" + body).back(),
+                  multiplier.history().column("momentum_" + body).back(),
+                  0.01);
+  }
+  for (unsigned int i = 1; i < errors.size(); ++i)
+    EXPECT_LT(errors[i], errors[i - 1]);
+  EXPECT_LT(errors.back() * 100., errors.front());
+}
+
+// Away from Courant number 1 the lumped-mass bar is no longer nodally exact: the errors of 6.2 are
+// discretization errors and must fall when h and dt are refined together (Courant 0.5). A
+// solution with jumps under a dispersive scheme converges at a fractional order in the RMS force
+// (h^{1/2} would be 1.41x per level; measured 1.28x), so each level must gain at least 1.15x in
+// the force RMS error and 1.3x in the final momentum error (measured 1.6x).
+TEST(BarImpacts, IdenticalBarsConvergeUnderRefinementAtCourantNumberOneHalf)
+{
+  double previous_force_error = 0., previous_momentum_error = 0.;
+  for (const unsigned int level : {0u, 1u, 2u})
+  {
+    const unsigned int elements = 100u << level;
+    const double dt             = 0.05 / (1u << level);
+    const BarRun run =
+        run_bar_case(identical,
+                     {"Geometry/Bar 1/number of elements=" + std::to_string(elements),
+                      "Geometry/Bar 2/number of elements=" + std::to_string(elements),
+                      "Time integration/time step=" + std::to_string(dt)});
+    const auto samples       = contact_samples(run);
+    const double force_error = contact_force_rms_error(run, samples);
+    const double t_end       = run.history().column("time").back();
+    const double momentum_error =
+        std::abs(run.history().column("momentum_2").back() - run.exact->momentum(1, t_end));
+    std::cout << "  " << elements << " elements per bar, dt = " << dt << ": force RMS error "
+              << force_error << ", final momentum error " << momentum_error << "\n";
+    if (level > 0)
     {
-      errors.push_back(penalty_force_difference(overrides, factor));
-      std::cout << "  " << (overrides.empty() ? "beta = 0.001" : "beta = 0.25")
-                << ", penalty factor " << factor
-                << ": RMS(F_penalty - F_multiplier) = " << errors.back() << "\n";
+      EXPECT_LT(force_error * 1.15, previous_force_error);
+      EXPECT_LT(momentum_error * 1.3, previous_momentum_error);
     }
-    for (unsigned int i = 1; i < errors.size(); ++i)
-      EXPECT_LT(errors[i] * per_decade_gain, errors[i - 1]);
-    EXPECT_LT(errors.back() * total_gain, errors.front());
+    previous_force_error    = force_error;
+    previous_momentum_error = momentum_error;
   }
 }
 } // namespace dyncontact::testing
