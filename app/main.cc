@@ -10,15 +10,37 @@
 #include <iostream>
 #include <sstream>
 
+namespace
+{
+/**
+ * Runs `task` on rank 0 only; an InputError it throws is rethrown on every rank, so that all ranks
+ * stop with the same message instead of the others waiting forever.
+ */
+template <typename Task>
+void on_root_rank(const Task& task)
+{
+  std::string error;
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    try
+    {
+      task();
+    }
+    catch (const dyncontact::InputError& input_error)
+    {
+      error = input_error.what();
+    }
+  error = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, error, 0);
+  if (!error.empty())
+    throw dyncontact::InputError(error);
+}
+} // namespace
+
 int main(int argc, char** argv)
 {
   using namespace dyncontact;
   Utilities::MPI::MPI_InitFinalize mpi_initialization(argc, argv, 1);
   try
   {
-    if (Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
-      throw InputError("the 1D bar problems run on one MPI rank; start dyncontact without mpirun "
-                       "(or with -np 1).");
     const CommandLine command_line =
         CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
     switch (command_line.action)
@@ -51,7 +73,8 @@ int main(int argc, char** argv)
   }
   catch (const InputError& error)
   {
-    std::cerr << "dyncontact: error: " << error.what() << std::endl;
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "dyncontact: error: " << error.what() << std::endl;
     return 2;
   }
   catch (const SolverFailure& error)

@@ -78,16 +78,23 @@ void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
 template <int dim>
 void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& displacement,
                                                        const double inactive_diagonal,
-                                                       TrilinosWrappers::SparseMatrix& matrix,
+                                                       TrilinosWrappers::SparseMatrix* matrix,
                                                        Vector<double>& constraint_residual) const
 {
   const types::global_dof_index n_dofs = displacement.size();
+  const auto add                       = [matrix](const types::global_dof_index row,
+                            const types::global_dof_index column,
+                            const double value)
+  {
+    if (matrix != nullptr)
+      matrix->add(row, column, value);
+  };
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
     const types::global_dof_index row = n_dofs + k;
     if (!active[k])
     {
-      matrix.add(row, row, inactive_diagonal);
+      add(row, row, inactive_diagonal);
       constraint_residual[k] = inactive_diagonal * multiplier_values[k];
       continue;
     }
@@ -95,18 +102,18 @@ void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& dis
     for (unsigned int d = 0; d < dim; ++d)
     {
       const double n_d = pairs[k].normal[d];
-      matrix.add(row, pairs[k].node_a.dofs[d], n_d);
-      matrix.add(pairs[k].node_a.dofs[d], row, n_d);
+      add(row, pairs[k].node_a.dofs[d], n_d);
+      add(pairs[k].node_a.dofs[d], row, n_d);
       if (!pairs[k].against_wall())
       {
-        matrix.add(row, pairs[k].node_b->dofs[d], -n_d);
-        matrix.add(pairs[k].node_b->dofs[d], row, -n_d);
+        add(row, pairs[k].node_b->dofs[d], -n_d);
+        add(pairs[k].node_b->dofs[d], row, -n_d);
       }
     }
     constraint_residual[k] = -gap(k, displacement);
     if (formulation == ContactFormulation::penalty)
     {
-      matrix.add(row, row, -1. / pairs[k].penalty_stiffness);
+      add(row, row, -1. / pairs[k].penalty_stiffness);
       constraint_residual[k] -= multiplier_values[k] / pairs[k].penalty_stiffness;
     }
   }

@@ -1,5 +1,6 @@
 #include <dyncontact/contact_newton_solver.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/trilinos_solver.h>
@@ -10,28 +11,100 @@
 namespace dyncontact
 {
 template <int dim>
-ContactNewtonSolver<dim>::ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
-                                              const ElasticBodies<dim>& bodies,
-                                              ContactConstraints<dim>& contact,
-                                              const Vector<double>& lumped_mass,
-                                              const NewtonParameters& parameters,
-                                              const double length_scale)
+ContactNewtonSolver<dim>::ContactNewtonSolver(
+    const DoFHandler<dim>& dof_handler,
+    const ElasticBodies<dim>& bodies,
+    ContactConstraints<dim>& contact,
+    const Vector<double>& lumped_mass,
+    const std::vector<types::global_dof_index>& fixed_dofs,
+    const NewtonParameters& parameters,
+    const double length_scale)
     : dof_handler(dof_handler), bodies(bodies), contact(contact), lumped_mass(lumped_mass),
-      parameters(parameters), gap_tolerance(parameters.residual_tolerance * length_scale)
+      parameters(parameters), gap_tolerance(parameters.residual_tolerance * length_scale),
+      communicator(dof_handler.get_triangulation().get_communicator()),
+      owns_multiplier_rows(Utilities::MPI::this_mpi_process(communicator) ==
+                           Utilities::MPI::n_mpi_processes(communicator) - 1),
+      is_fixed(dof_handler.n_dofs(), false)
 {
-  const types::global_dof_index n_dofs = dof_handler.n_dofs();
-  DynamicSparsityPattern dynamic_sparsity(n_dofs + contact.n_pairs());
+  const types::global_dof_index n_dofs  = dof_handler.n_dofs();
+  const types::global_dof_index n_total = n_dofs + contact.n_pairs();
+  locally_owned_rows.set_size(n_total);
+  locally_owned_rows.add_indices(dof_handler.locally_owned_dofs());
+  if (owns_multiplier_rows)
+    locally_owned_rows.add_range(n_dofs, n_total);
+  locally_owned_rows.compress();
+  for (const auto dof : fixed_dofs)
+  {
+    is_fixed[dof] = true;
+    if (locally_owned_rows.is_element(dof))
+      locally_owned_fixed_rows.push_back(dof);
+  }
+
+  // Rows this rank writes: those of its cells and, on the last rank, the constraint rows with the
+  // DoFs they couple to. Each such row gets its full pattern from every cell touching it (all
+  // cells are known on every rank of the shared triangulation).
   std::vector<types::global_dof_index> local_dofs(dof_handler.get_fe().n_dofs_per_cell());
+  IndexSet written_rows(n_total);
+  written_rows.add_indices(locally_owned_rows);
+  for (const auto& cell : dof_handler.active_cell_iterators())
+    if (cell->is_locally_owned())
+    {
+      cell->get_dof_indices(local_dofs);
+      written_rows.add_indices(local_dofs.begin(), local_dofs.end());
+    }
+  DynamicSparsityPattern contact_couplings(n_total);
+  contact.add_to_sparsity(contact_couplings, n_dofs);
+  if (owns_multiplier_rows)
+    for (types::global_dof_index row = n_dofs; row < n_total; ++row)
+      for (auto entry = contact_couplings.begin(row); entry != contact_couplings.end(row); ++entry)
+        written_rows.add_index(entry->column());
+  written_rows.compress();
+
+  DynamicSparsityPattern sparsity(n_total, n_total, written_rows);
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     cell->get_dof_indices(local_dofs);
     for (const auto row : local_dofs)
-      for (const auto column : local_dofs)
-        dynamic_sparsity.add(row, column);
+      if (written_rows.is_element(row))
+        for (const auto column : local_dofs)
+          sparsity.add(row, column);
   }
-  contact.add_to_sparsity(dynamic_sparsity, n_dofs);
-  sparsity.copy_from(dynamic_sparsity);
-  matrix.reinit(sparsity);
+  for (const auto row : written_rows)
+    for (auto entry = contact_couplings.begin(row); entry != contact_couplings.end(row); ++entry)
+      sparsity.add(row, entry->column());
+  matrix.reinit(locally_owned_rows, locally_owned_rows, sparsity, communicator);
+}
+
+template <int dim>
+Vector<double>
+ContactNewtonSolver<dim>::solve_linear_system(const Vector<double>& right_hand_side) const
+{
+  TrilinosWrappers::MPI::Vector distributed_rhs(locally_owned_rows, communicator);
+  TrilinosWrappers::MPI::Vector distributed_solution(locally_owned_rows, communicator);
+  for (const auto row : locally_owned_rows)
+    distributed_rhs[row] = right_hand_side[row];
+  distributed_rhs.compress(VectorOperation::insert);
+  try
+  {
+    SolverControl solver_control;
+    const bool parallel = Utilities::MPI::n_mpi_processes(communicator) > 1;
+    TrilinosWrappers::SolverDirect::AdditionalData data(false,
+                                                        parallel ? "Amesos_Mumps" : "Amesos_Klu");
+    TrilinosWrappers::SolverDirect direct_solver(solver_control, data);
+    direct_solver.solve(matrix, distributed_solution, distributed_rhs);
+  }
+  catch (const std::exception& error)
+  {
+    throw SolverFailure(std::string("the direct solver (Amesos) failed: ") + error.what());
+  }
+  // Every rank needs the whole solution: import all entries.
+  TrilinosWrappers::MPI::Vector whole(
+      locally_owned_rows, complete_index_set(right_hand_side.size()), communicator);
+  whole = distributed_solution;
+  Vector<double> solution(right_hand_side.size());
+  for (types::global_dof_index i = 0; i < solution.size(); ++i)
+    solution[i] = whole[i];
+  return solution;
 }
 
 template <int dim>
@@ -42,8 +115,7 @@ typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
   const unsigned int n_pairs           = contact.n_pairs();
   const double inactive_diagonal       = inertia_factor * lumped_mass.mean_value();
   Vector<double> displacement(n_dofs), inertia(n_dofs), contact_force(n_dofs),
-      residual(n_dofs + n_pairs), newton_update(n_dofs + n_pairs), constraint_residual(n_pairs),
-      multiplier_increment(n_pairs);
+      residual(n_dofs + n_pairs), constraint_residual(n_pairs), multiplier_increment(n_pairs);
   displacement = predictor;
   displacement += increment;
 
@@ -56,21 +128,26 @@ typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
     for (types::global_dof_index i = 0; i < n_dofs; ++i)
     {
       inertia[i] = inertia_factor * lumped_mass[i] * increment[i];
-      matrix.add(i, i, inertia_factor * lumped_mass[i]);
+      if (dof_handler.locally_owned_dofs().is_element(i))
+        matrix.add(i, i, inertia_factor * lumped_mass[i]);
     }
     contact_force = 0.;
     contact.add_contact_forces(contact_force);
-    contact.assemble_constraint_rows(displacement, inactive_diagonal, matrix, constraint_residual);
+    contact.assemble_constraint_rows(displacement,
+                                     inactive_diagonal,
+                                     owns_multiplier_rows ? &matrix : nullptr,
+                                     constraint_residual);
     matrix.compress(VectorOperation::add);
-
-    for (types::global_dof_index i = 0; i < n_dofs; ++i)
-      residual[i] = inertia[i] + internal_force_values[i] - contact_force[i];
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      residual[n_dofs + k] = constraint_residual[k];
+    matrix.clear_rows(locally_owned_fixed_rows, inactive_diagonal);
 
     double force_residual_squared = 0.;
     for (types::global_dof_index i = 0; i < n_dofs; ++i)
+    {
+      residual[i] = is_fixed[i] ? 0. : inertia[i] + internal_force_values[i] - contact_force[i];
       force_residual_squared += residual[i] * residual[i];
+    }
+    for (unsigned int k = 0; k < n_pairs; ++k)
+      residual[n_dofs + k] = constraint_residual[k];
     const double force_scale =
         inertia.l2_norm() + internal_force_values.l2_norm() + contact_force.l2_norm();
     const double residual_norm  = std::sqrt(force_residual_squared);
@@ -79,6 +156,8 @@ typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
       if (contact.is_active(k))
         constraint_violation = std::max(constraint_violation, std::abs(constraint_residual[k]));
 
+    if (!std::isfinite(residual_norm))
+      throw SolverFailure("the residual is not finite; the time integration is unstable.");
     if (!active_set_changed && residual_norm <= parameters.residual_tolerance * force_scale &&
         constraint_violation <= gap_tolerance)
       return {linear_solves, residual_norm};
@@ -88,25 +167,14 @@ typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
       message << "Newton did not converge in " << parameters.max_iterations
               << " linear solves (Newton/maximum iterations): residual " << residual_norm
               << " vs tolerance " << parameters.residual_tolerance * force_scale
-              << ", constraint violation " << constraint_violation << ", active pairs "
-              << contact.n_active() << (active_set_changed ? ", active set still changing" : "")
-              << ".";
+              << ", constraint violation " << constraint_violation << " vs gap tolerance "
+              << gap_tolerance << ", active pairs " << contact.n_active()
+              << (active_set_changed ? ", active set still changing" : "") << ".";
       throw SolverFailure(message.str());
     }
 
     residual *= -1.;
-    newton_update = 0.;
-    try
-    {
-      SolverControl solver_control;
-      TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
-      TrilinosWrappers::SolverDirect direct_solver(solver_control, data);
-      direct_solver.solve(matrix, newton_update, residual);
-    }
-    catch (const std::exception& error)
-    {
-      throw SolverFailure(std::string("the direct solver (Amesos KLU) failed: ") + error.what());
-    }
+    const Vector<double> newton_update = solve_linear_system(residual);
     for (types::global_dof_index i = 0; i < n_dofs; ++i)
       increment[i] += newton_update[i];
     displacement = predictor;

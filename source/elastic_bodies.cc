@@ -1,8 +1,12 @@
 #include <dyncontact/elastic_bodies.h>
 
+#include <deal.II/base/array_view.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/lac/full_matrix.h>
+
+#include <cmath>
 
 namespace dyncontact
 {
@@ -54,26 +58,52 @@ template <int dim>
 Vector<double> ElasticBodies<dim>::lumped_mass() const
 {
   const FiniteElement<dim>& fe = dof_handler.get_fe();
-  const QGaussLobatto<dim> nodal_quadrature(fe.degree + 1);
+  // Exact for rho phi_i^2 times the (at most linear) measure factor on affine cells.
+  const QGauss<dim> quadrature(fe.degree + 2);
   FEValues<dim> fe_values(
-      mapping, fe, nodal_quadrature, update_values | update_quadrature_points | update_JxW_values);
+      mapping, fe, quadrature, update_values | update_quadrature_points | update_JxW_values);
+  const unsigned int n_local = fe.n_dofs_per_cell();
   Vector<double> mass(dof_handler.n_dofs());
-  std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
+  std::vector<types::global_dof_index> local_dofs(n_local);
+  std::vector<double> consistent_diagonal(n_local);
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
+    if (!cell->is_locally_owned())
+      continue;
     fe_values.reinit(cell);
     cell->get_dof_indices(local_dofs);
     const double density = bodies[cell->material_id()].density;
-    for (unsigned int q = 0; q < nodal_quadrature.size(); ++q)
+    double cell_mass     = 0.;
+    std::fill(consistent_diagonal.begin(), consistent_diagonal.end(), 0.);
+    for (unsigned int q = 0; q < quadrature.size(); ++q)
     {
       const double weight =
           density * fe_values.JxW(q) *
           kinematics.measure_factor(fe_values.quadrature_point(q), cell->material_id());
-      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-        mass[local_dofs[i]] += weight * fe_values.shape_value(i, q);
+      cell_mass += weight;
+      for (unsigned int i = 0; i < n_local; ++i)
+        consistent_diagonal[i] += weight * std::pow(fe_values.shape_value(i, q), 2);
     }
+    // Every component carries the whole cell mass: scale its diagonal entries to sum to it.
+    std::vector<double> diagonal_sum(fe.n_components(), 0.);
+    for (unsigned int i = 0; i < n_local; ++i)
+      diagonal_sum[fe.system_to_component_index(i).first] += consistent_diagonal[i];
+    for (unsigned int i = 0; i < n_local; ++i)
+      mass[local_dofs[i]] +=
+          consistent_diagonal[i] * cell_mass / diagonal_sum[fe.system_to_component_index(i).first];
   }
+  sum_over_ranks(mass);
   return mass;
+}
+
+template <int dim>
+void ElasticBodies<dim>::sum_over_ranks(Vector<double>& values) const
+{
+  const MPI_Comm communicator = dof_handler.get_triangulation().get_communicator();
+  // deal.II allows the input and output views to be the same memory (MPI_IN_PLACE).
+  Utilities::MPI::sum(ArrayView<const double>(values.begin(), values.size()),
+                      communicator,
+                      ArrayView<double>(values.begin(), values.size()));
 }
 
 template <int dim>
@@ -118,6 +148,8 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
     *strain_energy = 0.;
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
+    if (!cell->is_locally_owned())
+      continue;
     fe_values.reinit(cell);
     cell->get_dof_indices(local_dofs);
     cell_force               = 0.;
@@ -160,6 +192,11 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
     if (tangent != nullptr)
       tangent->add(local_dofs, cell_tangent);
   }
+  if (internal_force != nullptr)
+    sum_over_ranks(*internal_force);
+  if (strain_energy != nullptr)
+    *strain_energy =
+        Utilities::MPI::sum(*strain_energy, dof_handler.get_triangulation().get_communicator());
 }
 
 template class ElasticBodies<1>;

@@ -1,5 +1,6 @@
 #include <dyncontact/field_output.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/numerics/data_out.h>
 
 #include <fstream>
@@ -45,13 +46,15 @@ void FieldOutput<dim>::write_fields(const unsigned int step,
   data_out.add_data_vector(body, "body");
   data_out.build_patches(mapping, dof_handler.get_fe().degree);
 
-  std::ostringstream name;
-  name << "solution-" << std::setw(5) << std::setfill('0') << step << ".vtu";
-  std::ofstream vtu(directory + "/" + name.str());
-  data_out.write_vtu(vtu);
-  pvd_records.emplace_back(time, name.str());
-  std::ofstream pvd(directory + "/solution.pvd");
-  DataOutBase::write_pvd_record(pvd, pvd_records);
+  const MPI_Comm communicator = dof_handler.get_triangulation().get_communicator();
+  const std::string record =
+      data_out.write_vtu_with_pvtu_record(directory + "/", "solution", step, communicator, 5);
+  if (Utilities::MPI::this_mpi_process(communicator) == 0)
+  {
+    pvd_records.emplace_back(time, record);
+    std::ofstream pvd(directory + "/solution.pvd");
+    DataOutBase::write_pvd_record(pvd, pvd_records);
+  }
 }
 
 template <int dim>

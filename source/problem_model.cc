@@ -3,6 +3,12 @@
 namespace dyncontact
 {
 template <int dim>
+std::vector<types::global_dof_index> ProblemModel<dim>::fixed_dofs(const NodeIndex<dim>&) const
+{
+  return {};
+}
+
+template <int dim>
 void ProblemModel<dim>::write_reference(const std::string&,
                                         const std::vector<double>&,
                                         const std::vector<Node<dim>>&) const

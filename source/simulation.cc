@@ -13,7 +13,9 @@ template <int dim>
 Simulation<dim>::Simulation(const RunParameters& parameters,
                             std::unique_ptr<ProblemModel<dim>> model,
                             std::ostream& log)
-    : parameters(parameters), model(std::move(model)), log(log), newmark(parameters.time),
+    : parameters(parameters), model(std::move(model)),
+      is_root_rank(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0), log(log, is_root_rank),
+      newmark(parameters.time), triangulation(MPI_COMM_WORLD),
       fe(FE_Q<dim>(this->model->element_degree()), dim), mapping(this->model->element_degree()),
       n_steps(0), time(0.), step_history(history_columns())
 {
@@ -47,14 +49,16 @@ void Simulation<dim>::setup()
   kinematics = model->create_kinematics();
   bodies     = std::make_unique<ElasticBodies<dim>>(
       dof_handler, mapping, *kinematics, model->body_materials());
-  mass    = bodies->lumped_mass();
-  contact = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
+  mass       = bodies->lumped_mass();
+  fixed_dofs = model->fixed_dofs(*nodes);
+  contact    = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
                                                       parameters.contact.formulation);
   solver =
       std::make_unique<ContactNewtonSolver<dim>>(dof_handler,
                                                  *bodies,
                                                  *contact,
                                                  mass,
+                                                 fixed_dofs,
                                                  parameters.newton,
                                                  GridTools::minimal_cell_diameter(triangulation));
   monitors = model->monitor_nodes(*nodes);
@@ -79,7 +83,8 @@ void Simulation<dim>::setup()
   if (std::abs(n_steps * dt - parameters.time.end_time) > 1e-9 * parameters.time.end_time)
     log << "  note: end time " << parameters.time.end_time
         << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
-  model->print_summary(log, dt);
+  if (is_root_rank)
+    model->print_summary(log.get_stream(), dt);
   warn_about_stability();
 }
 
@@ -136,6 +141,8 @@ void Simulation<dim>::set_initial_conditions()
   bodies->assemble_internal_force(displacement, internal_force, nullptr);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
     acceleration[i] = -internal_force[i] / mass[i];
+  for (const auto dof : fixed_dofs)
+    velocity[dof] = acceleration[dof] = 0.;
 }
 
 template <int dim>
@@ -202,7 +209,7 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
 
   if (parameters.output.vtu_interval > 0 && step % parameters.output.vtu_interval == 0)
     field_output->write_fields(step, time, displacement, velocity, acceleration);
-  if (profile_steps.count(step) > 0)
+  if (profile_steps.count(step) > 0 && is_root_rank)
     field_output->write_profile(time, nodes->nodes(), displacement, velocity, acceleration);
 }
 
@@ -213,8 +220,9 @@ void Simulation<dim>::run()
   set_initial_conditions();
   const std::string& directory = parameters.output.directory;
   field_output = std::make_unique<FieldOutput<dim>>(dof_handler, mapping, directory);
-  step_history.attach_file(directory + "/history.csv");
-  if (parameters.output.write_exact_solution)
+  if (is_root_rank)
+    step_history.attach_file(directory + "/history.csv");
+  if (parameters.output.write_exact_solution && is_root_rank)
   {
     std::vector<double> times(n_steps + 1);
     for (unsigned int step = 0; step <= n_steps; ++step)

@@ -75,11 +75,12 @@ public:
    * Writes the constraint rows of the Newton system into `matrix` (rows and columns n_dofs + k,
    * symmetric) and their residuals into `constraint_residual` (length n_pairs): -g (Lagrange) or
    * -g - lambda/eps (penalty) for active pairs, lambda for inactive ones with diagonal
-   * `inactive_diagonal`. The update is (delta u, delta lambda) = matrix^{-1} (-residual).
+   * `inactive_diagonal`. The update is (delta u, delta lambda) = matrix^{-1} (-residual). A null
+   * `matrix` computes the residuals only (ranks that do not own the constraint rows).
    */
   void assemble_constraint_rows(const Vector<double>& displacement,
                                 double inactive_diagonal,
-                                TrilinosWrappers::SparseMatrix& matrix,
+                                TrilinosWrappers::SparseMatrix* matrix,
                                 Vector<double>& constraint_residual) const;
 
   /** Adds a Newton increment of the multipliers. */

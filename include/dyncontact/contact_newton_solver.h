@@ -5,21 +5,29 @@
 #include <dyncontact/global.h>
 #include <dyncontact/parameters.h>
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+
+#include <vector>
 
 namespace dyncontact
 {
 /**
- * Solves one implicit time step with contact: find u and the multipliers such that
+ * Solves one implicit time step with contact: find the increment over the Newmark predictor and
+ * the multipliers such that
  *   c M (u - u~) + Q(u) - G^T lambda = 0,  and the constraint rows of ContactConstraints,
- * with c = 1/(beta dt^2), by Newton's method on the symmetric saddle-point system
- * [K_eff, -G^T; -G, -D], factorized by the Trilinos direct solver Amesos KLU. The active set is
- * updated after every linear solve (a semi-smooth Newton); the step has converged when the
- * residual is below the tolerance times the size of the force terms, the active constraints hold
- * to the gap tolerance, and the last update left the active set unchanged.
+ * with c = 1/(beta dt^2) and u = u~ + increment, by Newton's method on the symmetric saddle-point
+ * system [K_eff, -G^T; -G, -D]. The active set is updated after every linear solve (a semi-smooth
+ * Newton); the step has converged when the residual is below the tolerance times the size of the
+ * force terms, the active constraints hold to the gap tolerance, and the last update left the
+ * active set unchanged. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
+ *
+ * Parallel layout: rows of the matrix are distributed like the DoFs, the multiplier rows belong to
+ * the last rank; the direct solver is Amesos KLU on one rank and Amesos MUMPS on several. Vectors
+ * passed in and out are whole on every rank.
  *
  * It owns the matrix and its fixed sparsity pattern; it does not know Newmark's update formulas.
  */
@@ -35,13 +43,14 @@ public:
   };
 
   /**
-   * `length_scale` (e.g. the smallest element size) turns the relative tolerance into the gap
-   * tolerance used for activation and constraint convergence.
+   * `fixed_dofs` keep a zero increment. `length_scale` (e.g. the smallest element size) turns the
+   * relative tolerance into the gap tolerance used for activation and constraint convergence.
    */
   ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
                       const ElasticBodies<dim>& bodies,
                       ContactConstraints<dim>& contact,
                       const Vector<double>& lumped_mass,
+                      const std::vector<types::global_dof_index>& fixed_dofs,
                       const NewtonParameters& parameters,
                       double length_scale);
 
@@ -57,13 +66,20 @@ public:
   const Vector<double>& internal_force() const { return internal_force_values; }
 
 private:
+  /** Solves matrix * solution = right_hand_side; both vectors whole on every rank. */
+  Vector<double> solve_linear_system(const Vector<double>& right_hand_side) const;
+
   const DoFHandler<dim>& dof_handler;
   const ElasticBodies<dim>& bodies;
   ContactConstraints<dim>& contact;
   const Vector<double>& lumped_mass;
   const NewtonParameters parameters;
   const double gap_tolerance;
-  SparsityPattern sparsity;
+  const MPI_Comm communicator;
+  const bool owns_multiplier_rows;
+  std::vector<bool> is_fixed;
+  std::vector<types::global_dof_index> locally_owned_fixed_rows;
+  IndexSet locally_owned_rows;
   TrilinosWrappers::SparseMatrix matrix;
   Vector<double> internal_force_values;
 };

@@ -26,9 +26,15 @@ struct BodyMaterial
  * lumped mass, the internal force Q(u), its tangent dQ/du and the strain energy, all in the
  * total-Lagrangian setting. It knows neither contact nor time stepping.
  *
- * The lumped mass is the mass matrix integrated with the Gauss-Lobatto rule whose points are the
- * element's nodes, which makes it diagonal; its entries are positive for Q1 and Q2 (weights 1/6,
- * 2/3, 1/6 per direction) and sum to the body's mass.
+ * Parallel: every MPI rank integrates its locally owned cells; nodal vectors (mass, Q) and the
+ * energy are summed over the ranks, so every rank holds them whole. The tangent goes into a
+ * distributed Trilinos matrix (entries in rows owned elsewhere are sent on compress()).
+ *
+ * The lumped mass is the HRZ (Hinton-Rock-Zienkiewicz) diagonal: per cell, the diagonal of the
+ * consistent mass scaled so that each component's entries sum to the cell's mass. It is positive
+ * at every node, also on the symmetry axis of an axisymmetric model, where nodal (Gauss-Lobatto)
+ * quadrature would give zero because the measure 2 pi r vanishes there; for 2-node bars and
+ * plane 9-node quadrilaterals it equals the nodal-quadrature lumping (1/2, 1/2 and 1/36, 1/9, 4/9).
  */
 template <int dim>
 class ElasticBodies
@@ -39,7 +45,7 @@ public:
                 const Kinematics<dim>& kinematics,
                 std::vector<BodyMaterial> bodies);
 
-  /** Diagonal of the lumped mass matrix, one entry per DoF. */
+  /** Diagonal of the lumped mass matrix, one entry per DoF, on every rank. */
   Vector<double> lumped_mass() const;
 
   /**
@@ -54,6 +60,9 @@ public:
   double strain_energy(const Vector<double>& displacement) const;
 
 private:
+  /** Adds `values` over all MPI ranks, in place. */
+  void sum_over_ranks(Vector<double>& values) const;
+
   /** One pass over all quadrature points filling whichever of the outputs is not null. */
   void integrate(const Vector<double>& displacement,
                  Vector<double>* internal_force,

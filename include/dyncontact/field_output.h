@@ -15,9 +15,9 @@ namespace dyncontact
 {
 /**
  * Nodal fields for people to look at: VTU files of displacement, velocity, acceleration and body
- * id for ParaView, listed with their times in `solution.pvd` (rewritten after every file, so it
- * is valid even if the run stops), and CSV profiles of every node at chosen times. It computes
- * nothing.
+ * id for ParaView (one file per MPI rank and a .pvtu record per step), listed with their times in
+ * `solution.pvd` (rewritten after every step, so it is valid even if the run stops), and CSV
+ * profiles of every node at chosen times (written by rank 0). It computes nothing.
  */
 template <int dim>
 class FieldOutput
@@ -27,7 +27,7 @@ public:
               const Mapping<dim>& mapping,
               std::string directory);
 
-  /** Writes `solution-<step>.vtu` and updates `solution.pvd`. */
+  /** Writes `solution_<step>.<rank>.vtu` and `solution_<step>.pvtu`, and updates `solution.pvd`. */
   void write_fields(unsigned int step,
                     double time,
                     const Vector<double>& displacement,

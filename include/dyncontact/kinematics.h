@@ -60,4 +60,63 @@ public:
 private:
   std::vector<double> areas;
 };
+
+/**
+ * Axisymmetric solids: the 2D model lives in the meridian half-plane with coordinates X = (r, z)
+ * and displacement (u_r, u_z), and the third index of F is the hoop direction,
+ *
+ *   F = [[1 + du_r/dr, du_r/dz, 0], [du_z/dr, 1 + du_z/dz, 0], [0, 0, 1 + u_r/r]],
+ *
+ * with dV = 2 pi r dr dz. Torsion (a hoop displacement) is not represented. On the axis r = 0 the
+ * hoop terms u_r/r of F and shape_value/r of its variation are 0/0. Gauss quadrature points lie
+ * inside cells, never on the axis, so F is never needed there: asking for F or its variation at
+ * r <= 0 is a programming error (Assert). The body argument of measure_factor() is ignored.
+ */
+class AxisymmetricKinematics : public Kinematics<2>
+{
+public:
+  Tensor<2, 3> deformation_gradient(const Tensor<2, 2>& displacement_gradient,
+                                    const Tensor<1, 2>& displacement,
+                                    const Point<2>& X) const override;
+  Tensor<2, 3> deformation_gradient_variation(unsigned int component,
+                                              double shape_value,
+                                              const Tensor<1, 2>& shape_gradient,
+                                              const Point<2>& X) const override;
+  double measure_factor(const Point<2>& X, types::material_id body) const override;
+};
+
+/**
+ * Plane strain in the x-y plane: F = [[1 + du_x/dx, du_x/dy, 0], [du_y/dx, 1 + du_y/dy, 0],
+ * [0, 0, 1]], dV = dx dy (unit thickness). The out-of-plane stress that keeps F_33 = 1 is implied,
+ * not computed. It is not plane stress. The body argument of measure_factor() is ignored.
+ */
+class PlaneStrainKinematics : public Kinematics<2>
+{
+public:
+  Tensor<2, 3> deformation_gradient(const Tensor<2, 2>& displacement_gradient,
+                                    const Tensor<1, 2>& displacement,
+                                    const Point<2>& X) const override;
+  Tensor<2, 3> deformation_gradient_variation(unsigned int component,
+                                              double shape_value,
+                                              const Tensor<1, 2>& shape_gradient,
+                                              const Point<2>& X) const override;
+  double measure_factor(const Point<2>& X, types::material_id body) const override;
+};
+
+/**
+ * Three-dimensional solids: F = I + grad u, dV = dx dy dz. No reduction of any kind. The body
+ * argument of measure_factor() is ignored.
+ */
+class SolidKinematics : public Kinematics<3>
+{
+public:
+  Tensor<2, 3> deformation_gradient(const Tensor<2, 3>& displacement_gradient,
+                                    const Tensor<1, 3>& displacement,
+                                    const Point<3>& X) const override;
+  Tensor<2, 3> deformation_gradient_variation(unsigned int component,
+                                              double shape_value,
+                                              const Tensor<1, 3>& shape_gradient,
+                                              const Point<3>& X) const override;
+  double measure_factor(const Point<3>& X, types::material_id body) const override;
+};
 } // namespace dyncontact

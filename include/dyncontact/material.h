@@ -4,6 +4,9 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <memory>
+#include <string>
+
 namespace dyncontact
 {
 /**
@@ -48,4 +51,68 @@ private:
   double shear_modulus;
   Tensor<4, 3> elasticity_tensor;
 };
+
+/**
+ * The St. Venant-Kirchhoff law: linear elasticity written in the Green-Lagrange strain
+ * E = (F^T F - I)/2, W = lambda/2 (tr E)^2 + mu E:E, with the second Piola-Kirchhoff stress
+ * S = lambda tr(E) I + 2 mu E and P = F S. The Lame constants come from Young's modulus and
+ * Poisson's ratio as in linear elasticity, to which it reduces at small strain. It is objective, so
+ * large rotations are exact, but it is only meant for moderate strains: it softens without bound
+ * in compression and gives W a finite value even for an inverted element (det F <= 0), which it
+ * therefore does not detect.
+ */
+class StVenantKirchhoffMaterial : public Material
+{
+public:
+  /** Throws InputError unless E > 0 and -1 < nu < 0.5. */
+  StVenantKirchhoffMaterial(double youngs_modulus, double poissons_ratio);
+
+  double strain_energy_density(const Tensor<2, 3>& F) const override;
+  Tensor<2, 3> first_piola_kirchhoff_stress(const Tensor<2, 3>& F) const override;
+  Tensor<4, 3> stress_tangent(const Tensor<2, 3>& F) const override;
+
+private:
+  double lame_lambda;
+  double shear_modulus;
+};
+
+/**
+ * A compressible neo-Hookean law with the strain energy density
+ *
+ *   W(F) = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2,   I1 = tr(F^T F),  J = det F,
+ *
+ * so that P = mu F + (lambda ln J - mu) F^{-T}. lambda and mu are the Lame constants of the given
+ * Young's modulus and Poisson's ratio, and at small strain the law reduces to linear elasticity
+ * with exactly these constants. W grows without bound as J -> 0 and is undefined for J <= 0; an
+ * inverted element is a failed solve (SolverFailure), not a user error. It is not a
+ * nearly-incompressible formulation: as nu -> 0.5 a displacement-only discretization locks.
+ */
+class CompressibleNeoHookeanMaterial : public Material
+{
+public:
+  /** Throws InputError unless E > 0 and -1 < nu < 0.5. */
+  CompressibleNeoHookeanMaterial(double youngs_modulus, double poissons_ratio);
+
+  /** Each of the three throws SolverFailure if det F <= 0 (an inverted element). */
+  double strain_energy_density(const Tensor<2, 3>& F) const override;
+  Tensor<2, 3> first_piola_kirchhoff_stress(const Tensor<2, 3>& F) const override;
+  Tensor<4, 3> stress_tangent(const Tensor<2, 3>& F) const override;
+
+private:
+  double lame_lambda;
+  double shear_modulus;
+};
+
+/**
+ * The names create_material() accepts, separated by '|' as Patterns::Selection expects:
+ * "linear elastic|st venant-kirchhoff|neo-hookean".
+ */
+std::string material_names();
+
+/**
+ * The material of the given name (one of material_names()) with Young's modulus E and Poisson's
+ * ratio nu. Throws InputError for an unknown name or for E, nu out of range.
+ */
+std::shared_ptr<const Material>
+create_material(const std::string& name, double youngs_modulus, double poissons_ratio);
 } // namespace dyncontact

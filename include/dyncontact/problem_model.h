@@ -54,6 +54,9 @@ public:
   /** Candidate contact pairs built from the mesh's nodes. */
   virtual std::vector<ContactPair<dim>> contact_pairs(const NodeIndex<dim>& nodes) const = 0;
 
+  /** DoFs held at zero for all time (e.g. u_r on the symmetry axis). The default: none. */
+  virtual std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<dim>& nodes) const;
+
   /** One node per body ("tip", its contact node) whose u, v, a the history reports. */
   virtual std::vector<Node<dim>> monitor_nodes(const NodeIndex<dim>& nodes) const = 0;
 

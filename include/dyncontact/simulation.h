@@ -11,6 +11,8 @@
 #include <dyncontact/parameters.h>
 #include <dyncontact/problem_model.h>
 
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
@@ -34,7 +36,10 @@ template <int dim>
 class Simulation
 {
 public:
-  /** `log` receives the progress report (std::cout for the executable). */
+  /**
+   * `log` receives the progress report (std::cout for the executable), from rank 0 only. All
+   * ranks of MPI_COMM_WORLD take part; files are written by rank 0 (VTU: one piece per rank).
+   */
   Simulation(const RunParameters& parameters,
              std::unique_ptr<ProblemModel<dim>> model,
              std::ostream& log);
@@ -71,9 +76,10 @@ private:
 
   const RunParameters parameters;
   const std::unique_ptr<ProblemModel<dim>> model;
-  std::ostream& log;
+  const bool is_root_rank;
+  ConditionalOStream log;
   const Newmark newmark;
-  Triangulation<dim> triangulation;
+  parallel::shared::Triangulation<dim> triangulation;
   const FESystem<dim> fe;
   const MappingQ<dim> mapping;
   DoFHandler<dim> dof_handler;
@@ -81,6 +87,7 @@ private:
   std::unique_ptr<Kinematics<dim>> kinematics;
   std::unique_ptr<ElasticBodies<dim>> bodies;
   Vector<double> mass;
+  std::vector<types::global_dof_index> fixed_dofs;
   std::unique_ptr<ContactConstraints<dim>> contact;
   std::unique_ptr<ContactNewtonSolver<dim>> solver;
   std::vector<Node<dim>> monitors;
