@@ -1,5 +1,6 @@
 // The dyncontact executable: reads the command line and the parameter file, dispatches to the
 // problem's dimension, and turns every failure into one clear message and a non-zero exit code.
+#include <dyncontact/axisymmetric_mesh_model.h>
 #include <dyncontact/bar_model.h>
 #include <dyncontact/command_line.h>
 #include <dyncontact/parameters.h>
@@ -61,12 +62,22 @@ int main(int argc, char** argv)
     {
       const ParameterReader reader(command_line.parameter_file, command_line.overrides);
       const RunParameters& parameters = reader.parameters();
-      prepare_output_directory(parameters.output.directory);
-      reader.write_records(parameters.output.directory);
-      Simulation<1> simulation(parameters,
-                               std::make_unique<BarModel>(parameters.geometry, parameters.contact),
-                               std::cout);
-      simulation.run();
+      on_root_rank(
+          [&]
+          {
+            prepare_output_directory(parameters.output.directory);
+            reader.write_records(parameters.output.directory);
+          });
+      if (parameters.problem.geometry == GeometryKind::bars)
+        Simulation<1>(parameters,
+                      std::make_unique<BarModel>(parameters.geometry, parameters.contact),
+                      std::cout)
+            .run();
+      else
+        Simulation<2>(parameters,
+                      std::make_unique<AxisymmetricMeshModel>(parameters.mesh, parameters.bodies),
+                      std::cout)
+            .run();
       return 0;
     }
     }

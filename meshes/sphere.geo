@@ -17,11 +17,11 @@
 //   PoleSide        +1: contact pole at z = CentreZ + R (body 1 of dyncontact), -1: at
 //                   z = CentreZ - R (the mirror image)                                    (1)
 //   Divisions       element edges on the surface of the pole block at refinement 0, integer
-//                   >= 1; the half circumference has 4 Divisions                          (6)
+//                   >= 1; the half circumference has 4 * Divisions edges                  (6)
 //   RadialDivisions element layers between the core and the surface, integer >= 1        (6)
 //   Refinement      each level doubles Divisions and RadialDivisions, integer >= 0        (0)
 //   PoleGrading     largest / smallest element edge along the surface (far pole / contact
-//                   pole), >= 1; 1 is uniform; beyond about 10 the pole block gets slender  (3)
+//                   pole), >= 1; 1 is uniform; beyond about 10 the pole block is slender  (3)
 //   SurfaceGrading  innermost / outermost element layer along each radial line, >= 1      (1.5)
 //
 // Physical groups (read by dyncontact as material and boundary ids, see gmsh_mesh.h):

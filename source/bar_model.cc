@@ -31,7 +31,7 @@ std::vector<unsigned int> BarModel::bars_in_x_order() const
   return order;
 }
 
-void BarModel::create_triangulation(Triangulation<1>& triangulation) const
+void BarModel::create_triangulation(Triangulation<1>& triangulation)
 {
   std::vector<Point<1>> vertices;
   std::vector<CellData<1>> cells;

@@ -238,4 +238,5 @@ double ContactConstraints<dim>::total_multiplier() const
 }
 
 template class ContactConstraints<1>;
+template class ContactConstraints<2>;
 } // namespace dyncontact

@@ -148,8 +148,14 @@ typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
     }
     for (unsigned int k = 0; k < n_pairs; ++k)
       residual[n_dofs + k] = constraint_residual[k];
-    const double force_scale =
-        inertia.l2_norm() + internal_force_values.l2_norm() + contact_force.l2_norm();
+    // The force terms, plus the size of the terms that cancel in K u: near a zero crossing of a
+    // vibration the force terms vanish but the round-off of evaluating K u does not.
+    double largest_diagonal = 0.;
+    for (const auto row : dof_handler.locally_owned_dofs())
+      largest_diagonal = std::max(largest_diagonal, std::abs(matrix.diag_element(row)));
+    largest_diagonal         = Utilities::MPI::max(largest_diagonal, communicator);
+    const double force_scale = inertia.l2_norm() + internal_force_values.l2_norm() +
+                               contact_force.l2_norm() + largest_diagonal * displacement.l2_norm();
     const double residual_norm  = std::sqrt(force_residual_squared);
     double constraint_violation = 0.;
     for (unsigned int k = 0; k < n_pairs; ++k)
@@ -188,4 +194,5 @@ typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
 }
 
 template class ContactNewtonSolver<1>;
+template class ContactNewtonSolver<2>;
 } // namespace dyncontact

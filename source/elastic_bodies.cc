@@ -200,4 +200,6 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
 }
 
 template class ElasticBodies<1>;
+template class ElasticBodies<2>;
+template class ElasticBodies<3>;
 } // namespace dyncontact

@@ -88,4 +88,5 @@ void FieldOutput<dim>::write_profile(const double time,
 }
 
 template class FieldOutput<1>;
+template class FieldOutput<2>;
 } // namespace dyncontact

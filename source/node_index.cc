@@ -73,4 +73,5 @@ const Node<dim>& NodeIndex<dim>::closest_node(const types::material_id body,
 
 template class NodeIndex<1>;
 template class NodeIndex<2>;
+template class NodeIndex<3>;
 } // namespace dyncontact

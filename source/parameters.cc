@@ -1,3 +1,4 @@
+#include <dyncontact/material.h>
 #include <dyncontact/parameters.h>
 
 #include <deal.II/base/utilities.h>
@@ -5,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -107,15 +109,35 @@ std::string bar_section(const unsigned int bar)
   return "Bar " + std::to_string(bar + 1);
 }
 
-/** Declares everything for a problem with `n_bars` bars. */
-void declare_all(ParameterHandler& prm, const unsigned int n_bars)
+/** What the first parsing pass finds out: the kind of problem and the number of bodies. */
+struct ProblemSize
 {
+  GeometryKind geometry;
+  unsigned int n_bars;
+  unsigned int n_bodies;
+};
+
+/**
+ * Declares the sections a problem of the given size uses: the bars' `Geometry` for bars, `Mesh`
+ * and `Bodies` for mesh-based problems (both when `size` is empty, for the documentation).
+ */
+void declare_all(ParameterHandler& prm, const std::optional<ProblemSize>& size)
+{
+  ProblemParameters::declare_parameters(prm);
   TimeIntegrationParameters::declare_parameters(prm);
   ContactParameters::declare_parameters(prm);
   NewtonParameters::declare_parameters(prm);
-  GeometryParameters::declare_parameters(prm, n_bars);
+  if (!size || size->geometry == GeometryKind::bars)
+    GeometryParameters::declare_parameters(prm, size ? size->n_bars : 1);
+  if (!size || size->geometry != GeometryKind::bars)
+  {
+    MeshParameters::declare_parameters(prm);
+    BodiesParameters::declare_parameters(prm, size ? size->n_bodies : 1);
+  }
   OutputParameters::declare_parameters(prm);
 }
+
+const std::string geometry_names = "bars|axisymmetric mesh";
 
 /** Parses `filename` into `prm`, turning deal.II's exceptions into InputError. */
 void parse_file(ParameterHandler& prm, const std::string& filename, const bool skip_undefined)
@@ -130,6 +152,143 @@ void parse_file(ParameterHandler& prm, const std::string& filename, const bool s
   }
 }
 } // namespace
+
+void ProblemParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Problem");
+  prm.declare_entry("geometry",
+                    "bars",
+                    Patterns::Selection(geometry_names),
+                    "Kind of problem. bars: 1D bars on the x axis (subsection Geometry). "
+                    "axisymmetric mesh: bodies of revolution in the (r, z) half plane from a gmsh "
+                    "mesh, 9-node quadrilaterals (subsections Mesh and Bodies).");
+  prm.leave_subsection();
+}
+
+void ProblemParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Problem");
+  geometry = prm.get("geometry") == "bars" ? GeometryKind::bars : GeometryKind::axisymmetric_mesh;
+  prm.leave_subsection();
+}
+
+void MeshParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Mesh");
+  prm.declare_entry("file",
+                    "",
+                    Patterns::FileName(),
+                    "gmsh mesh: a .geo file (meshed through the gmsh API) or a .msh file. A "
+                    "relative path is relative to the directory of the parameter file. Physical "
+                    "surface b is body b, physical curve 1 the symmetry axis, physical curve b + 1 "
+                    "the surface of body b (see meshes/sphere.geo).",
+                    true);
+  prm.declare_entry("geo parameters",
+                    "",
+                    Patterns::Map(Patterns::Anything(), Patterns::Double()),
+                    "Numbers set in a .geo file before meshing, as 'name: value' pairs separated "
+                    "by commas, e.g. 'R: 8, Refinement: 1' (see the file's header for its "
+                    "parameters). Ignored for .msh files.");
+  prm.leave_subsection();
+}
+
+void MeshParameters::parse_parameters(ParameterHandler& prm,
+                                      const std::string& parameter_file_directory)
+{
+  prm.enter_subsection("Mesh");
+  const std::filesystem::path given = prm.get("file");
+  file = (given.is_relative() ? std::filesystem::path(parameter_file_directory) / given : given)
+             .lexically_normal()
+             .string();
+  if (!std::filesystem::is_regular_file(file))
+    throw InputError("Mesh/file = '" + given.string() + "': no such file ('" + file +
+                     "'; relative paths are taken relative to the parameter file).");
+  geo_parameters.clear();
+  for (const auto& pair : Utilities::split_string_list(prm.get("geo parameters"), ','))
+  {
+    const std::vector<std::string> name_and_value = Utilities::split_string_list(pair, ':');
+    geo_parameters[name_and_value[0]]             = Utilities::string_to_double(name_and_value[1]);
+  }
+  prm.leave_subsection();
+}
+
+void BodyParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("material",
+                    "linear elastic",
+                    Patterns::Selection(material_names()),
+                    "Hyperelastic law: linear elastic (small strain), st venant-kirchhoff, or "
+                    "neo-hookean (compressible, W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2).");
+  prm.declare_entry("Young's modulus", "1", Patterns::Double(0.), "E [force/length^2], > 0.", true);
+  prm.declare_entry(
+      "Poisson's ratio", "0.3", Patterns::Double(-1., 0.5), "nu [-], -1 < nu < 0.5.", true);
+  prm.declare_entry("density", "1", Patterns::Double(0.), "rho [mass/length^3], > 0.", true);
+  prm.declare_entry("monitor point",
+                    "0, 0",
+                    Patterns::List(Patterns::Double(), 2, 2),
+                    "(r, z) of the point whose nearest node of this body is reported in the "
+                    "history as u_tip_<b>, v_tip_<b>, a_tip_<b> (axial components).");
+  prm.enter_subsection("Initial velocity");
+  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
+  prm.leave_subsection();
+}
+
+void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+{
+  material       = prm.get("material");
+  youngs_modulus = get_positive(prm, "Young's modulus", section);
+  poissons_ratio = prm.get_double("Poisson's ratio");
+  if (!(poissons_ratio > -1. && poissons_ratio < 0.5))
+    throw InputError(section + "/Poisson's ratio = " + prm.get("Poisson's ratio") +
+                     " is not allowed: it must satisfy -1 < nu < 0.5.");
+  density                              = get_positive(prm, "density", section);
+  const std::vector<std::string> point = Utilities::split_string_list(prm.get("monitor point"));
+  monitor_point =
+      Point<2>(Utilities::string_to_double(point[0]), Utilities::string_to_double(point[1]));
+  prm.enter_subsection("Initial velocity");
+  initial_velocity = std::make_shared<Functions::ParsedFunction<2>>(2);
+  try
+  {
+    initial_velocity->parse_parameters(prm);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    prm.leave_subsection();
+    throw InputError(section + "/Initial velocity: " + exception_text(exception));
+  }
+  prm.leave_subsection();
+}
+
+void BodiesParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_bodies)
+{
+  prm.enter_subsection("Bodies");
+  prm.declare_entry("number of bodies",
+                    "1",
+                    Patterns::Integer(1, 100),
+                    "Number of bodies of the mesh [-], 1..100; body b is described in subsection "
+                    "'Body b' and is physical surface b of the mesh.");
+  for (unsigned int body = 0; body < n_bodies; ++body)
+  {
+    prm.enter_subsection("Body " + std::to_string(body + 1));
+    BodyParameters::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+  prm.leave_subsection();
+}
+
+void BodiesParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Bodies");
+  bodies.resize(prm.get_integer("number of bodies"));
+  for (unsigned int body = 0; body < bodies.size(); ++body)
+  {
+    const std::string name = "Body " + std::to_string(body + 1);
+    prm.enter_subsection(name);
+    bodies[body].parse_parameters(prm, "Bodies/" + name);
+    prm.leave_subsection();
+  }
+  prm.leave_subsection();
+}
 
 void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
 {
@@ -391,22 +550,32 @@ ParameterReader::ParameterReader(const std::string& filename,
   buffer << input.rdbuf();
   input_text = buffer.str();
 
-  // First pass: only the number of bars, which decides what the second pass declares.
-  unsigned int n_bars = 1;
+  // First pass: the kind of problem and the number of bodies decide what the second declares.
+  ProblemSize size;
   {
-    ParameterHandler count_prm;
-    count_prm.enter_subsection("Geometry");
-    count_prm.declare_entry("number of bars", "1", Patterns::Integer(1, 100));
-    count_prm.leave_subsection();
-    parse_file(count_prm, filename, true);
+    ParameterHandler size_prm;
+    ProblemParameters::declare_parameters(size_prm);
+    size_prm.enter_subsection("Geometry");
+    size_prm.declare_entry("number of bars", "1", Patterns::Integer(1, 100));
+    size_prm.leave_subsection();
+    size_prm.enter_subsection("Bodies");
+    size_prm.declare_entry("number of bodies", "1", Patterns::Integer(1, 100));
+    size_prm.leave_subsection();
+    parse_file(size_prm, filename, true);
     for (const auto& text : overrides)
-      apply_override(count_prm, text, true);
-    count_prm.enter_subsection("Geometry");
-    n_bars = count_prm.get_integer("number of bars");
-    count_prm.leave_subsection();
+      apply_override(size_prm, text, true);
+    ProblemParameters problem;
+    problem.parse_parameters(size_prm);
+    size.geometry = problem.geometry;
+    size_prm.enter_subsection("Geometry");
+    size.n_bars = size_prm.get_integer("number of bars");
+    size_prm.leave_subsection();
+    size_prm.enter_subsection("Bodies");
+    size.n_bodies = size_prm.get_integer("number of bodies");
+    size_prm.leave_subsection();
   }
 
-  declare_all(prm, n_bars);
+  declare_all(prm, size);
   parse_file(prm, filename, false);
   for (const auto& text : overrides)
     apply_override(prm, text, false);
@@ -421,12 +590,20 @@ ParameterReader::ParameterReader(const std::string& filename,
         names += (names.empty() ? "" : ", ") + demangle_entry_path(path);
       throw InputError("parameter file '" + filename + "': " + names +
                        (missing.size() > 1 ? " are" : " is") +
-                       " not set; every entry of every bar must be given.");
+                       " not set; every entry of every bar and body must be given.");
     }
+    run_parameters.problem.parse_parameters(prm);
     run_parameters.time.parse_parameters(prm);
     run_parameters.contact.parse_parameters(prm);
     run_parameters.newton.parse_parameters(prm);
-    run_parameters.geometry.parse_parameters(prm);
+    if (size.geometry == GeometryKind::bars)
+      run_parameters.geometry.parse_parameters(prm);
+    else
+    {
+      run_parameters.mesh.parse_parameters(prm,
+                                           std::filesystem::path(filename).parent_path().string());
+      run_parameters.bodies.parse_parameters(prm);
+    }
     run_parameters.output.parse_parameters(prm);
   }
   catch (const ExceptionBase& exception)
@@ -467,7 +644,7 @@ void ParameterReader::write_records(const std::string& directory) const
 void ParameterReader::print_documentation(std::ostream& out)
 {
   ParameterHandler prm;
-  declare_all(prm, 2);
+  declare_all(prm, std::nullopt);
   prm.print_parameters(out, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
 }
 } // namespace dyncontact

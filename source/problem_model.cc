@@ -17,4 +17,5 @@ void ProblemModel<dim>::write_reference(const std::string&,
 
 template class ProblemModel<1>;
 template class ProblemModel<2>;
+template class ProblemModel<3>;
 } // namespace dyncontact

@@ -267,4 +267,5 @@ void Simulation<dim>::run()
 }
 
 template class Simulation<1>;
+template class Simulation<2>;
 } // namespace dyncontact

@@ -23,7 +23,7 @@ public:
   unsigned int n_bodies() const override { return geometry.bars.size(); }
   /** max over the bars of 2 c / h, the highest frequency of a lumped-mass 2-node bar mesh. */
   double highest_frequency() const override;
-  void create_triangulation(Triangulation<1>& triangulation) const override;
+  void create_triangulation(Triangulation<1>& triangulation) override;
   std::vector<BodyMaterial> body_materials() const override;
   std::unique_ptr<Kinematics<1>> create_kinematics() const override;
   Tensor<1, 1> initial_velocity(types::material_id body, const Point<1>& X) const override;

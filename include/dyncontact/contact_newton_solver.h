@@ -22,8 +22,9 @@ namespace dyncontact
  * with c = 1/(beta dt^2) and u = u~ + increment, by Newton's method on the symmetric saddle-point
  * system [K_eff, -G^T; -G, -D]. The active set is updated after every linear solve (a semi-smooth
  * Newton); the step has converged when the residual is below the tolerance times the size of the
- * force terms, the active constraints hold to the gap tolerance, and the last update left the
- * active set unchanged. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
+ * force terms (inertia, internal, contact, and max diag(K_eff) |u|, the round-off scale of K u),
+ * the active constraints hold to the gap tolerance, and the last update left the active set
+ * unchanged. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
  *
  * Parallel layout: rows of the matrix are distributed like the DoFs, the multiplier rows belong to
  * the last rank; the direct solver is Amesos KLU on one rank and Amesos MUMPS on several. Vectors

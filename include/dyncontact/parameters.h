@@ -3,7 +3,11 @@
 #include <dyncontact/global.h>
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/base/point.h>
 
+#include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -106,13 +110,66 @@ struct OutputParameters
   void parse_parameters(ParameterHandler& prm);
 };
 
+/** Which kind of problem a run solves; decides the dimension and the sections that apply. */
+enum class GeometryKind
+{
+  bars,             ///< 1D bars built in code, subsection `Geometry`
+  axisymmetric_mesh ///< bodies of revolution from a gmsh mesh, subsections `Mesh` and `Bodies`
+};
+
+/** Subsection `Problem`. */
+struct ProblemParameters
+{
+  GeometryKind geometry;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/** The mesh of a mesh-based problem. Subsection `Mesh`. */
+struct MeshParameters
+{
+  std::string file; ///< resolved: relative paths are taken relative to the parameter file
+  std::map<std::string, double> geo_parameters;
+
+  static void declare_parameters(ParameterHandler& prm);
+  /** `parameter_file_directory` resolves a relative mesh file name. */
+  void parse_parameters(ParameterHandler& prm, const std::string& parameter_file_directory);
+};
+
+/** One body of a mesh-based problem. Subsection `Bodies/Body <b>`. */
+struct BodyParameters
+{
+  std::string material;
+  double youngs_modulus;
+  double poissons_ratio;
+  double density;
+  Point<2> monitor_point;
+  std::shared_ptr<Functions::ParsedFunction<2>> initial_velocity;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm, const std::string& section);
+};
+
+/** The bodies of a mesh-based problem, body b = material id b - 1. Subsection `Bodies`. */
+struct BodiesParameters
+{
+  std::vector<BodyParameters> bodies;
+
+  static void declare_parameters(ParameterHandler& prm, unsigned int n_bodies);
+  void parse_parameters(ParameterHandler& prm);
+};
+
 /** Every setting of one run, grouped by prm subsection. */
 struct RunParameters
 {
+  ProblemParameters problem;
   TimeIntegrationParameters time;
   ContactParameters contact;
   NewtonParameters newton;
-  GeometryParameters geometry;
+  GeometryParameters geometry; ///< bars only
+  MeshParameters mesh;         ///< mesh-based problems only
+  BodiesParameters bodies;     ///< mesh-based problems only
   OutputParameters output;
 };
 

@@ -31,7 +31,7 @@ public:
   virtual unsigned int element_degree() const = 0;
 
   /** All bodies in one triangulation, material id b = body b (0-based). */
-  virtual void create_triangulation(Triangulation<dim>& triangulation) const = 0;
+  virtual void create_triangulation(Triangulation<dim>& triangulation) = 0;
 
   /** Number of bodies. */
   virtual unsigned int n_bodies() const = 0;
