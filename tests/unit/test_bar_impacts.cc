@@ -5,7 +5,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 
-#include "bar_run.h"
+#include "case_run.h"
 
 namespace dyncontact::testing
 {

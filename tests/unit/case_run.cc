@@ -1,5 +1,6 @@
-#include "bar_run.h"
+#include "case_run.h"
 
+#include <dyncontact/axisymmetric_mesh_model.h>
 #include <dyncontact/bar_model.h>
 #include <dyncontact/command_line.h>
 
@@ -24,7 +25,11 @@ double BarRun::exact_contact_force(const double t) const
   return force;
 }
 
-BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>& overrides)
+namespace
+{
+/** Reads the prm with the overrides, redirected to a fresh temporary output directory. */
+RunParameters test_parameters(const std::string& prm_file,
+                              const std::vector<std::string>& overrides)
 {
   const auto* test = ::testing::UnitTest::GetInstance()->current_test_info();
   std::ostringstream directory;
@@ -38,22 +43,43 @@ BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>&
                        {"Output/directory=" + directory.str(),
                         "Output/vtu interval=0",
                         "Output/write exact solution=false"});
-  const ParameterReader reader(source_path(prm_file), all_overrides);
+  const RunParameters parameters =
+      ParameterReader(source_path(prm_file), all_overrides).parameters();
+  prepare_output_directory(parameters.output.directory);
+  return parameters;
+}
 
-  BarRun run;
-  run.parameters = reader.parameters();
-  prepare_output_directory(run.parameters.output.directory);
+/** Runs the simulation quietly and removes its output directory. */
+template <int dim>
+std::unique_ptr<Simulation<dim>> run_quietly(const RunParameters& parameters,
+                                             std::unique_ptr<ProblemModel<dim>> model)
+{
   std::ostringstream log;
-  run.simulation = std::make_unique<Simulation<1>>(
-      run.parameters,
-      std::make_unique<BarModel>(run.parameters.geometry, run.parameters.contact),
-      log);
-  run.simulation->run();
+  auto simulation = std::make_unique<Simulation<dim>>(parameters, std::move(model), log);
+  simulation->run();
+  std::filesystem::remove_all(parameters.output.directory);
+  return simulation;
+}
+} // namespace
 
-  run.exact = std::make_unique<ExactBarSolution>(
-      BarModel(run.parameters.geometry, run.parameters.contact)
-          .exact_solution(run.parameters.time.end_time + run.parameters.time.time_step));
-  std::filesystem::remove_all(directory.str());
+BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>& overrides)
+{
+  BarRun run;
+  run.parameters = test_parameters(prm_file, overrides);
+  const BarModel model(run.parameters.geometry, run.parameters.contact);
+  run.simulation = run_quietly<1>(run.parameters, std::make_unique<BarModel>(model));
+  run.exact      = std::make_unique<ExactBarSolution>(
+      model.exact_solution(run.parameters.time.end_time + run.parameters.time.time_step));
+  return run;
+}
+
+MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string>& overrides)
+{
+  MeshRun run;
+  run.parameters = test_parameters(prm_file, overrides);
+  run.simulation = run_quietly<2>(
+      run.parameters,
+      std::make_unique<AxisymmetricMeshModel>(run.parameters.mesh, run.parameters.bodies));
   return run;
 }
 

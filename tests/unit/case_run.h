@@ -1,5 +1,5 @@
 #pragma once
-// Test support: runs a shipped bar prm in-process and pairs it with its exact solution.
+// Test support: runs shipped prm files in-process (bars paired with their exact solution).
 
 #include <dyncontact/exact_bar_solution.h>
 #include <dyncontact/parameters.h>
@@ -32,12 +32,24 @@ struct BarRun
   double exact_contact_force(double t) const;
 };
 
+/** A finished run of an axisymmetric mesh problem. */
+struct MeshRun
+{
+  RunParameters parameters;
+  std::unique_ptr<Simulation<2>> simulation;
+
+  const History& history() const { return simulation->history(); }
+};
+
 /**
- * Runs `prm_file` (relative to the source tree) with the overrides applied after the file,
- * writing into a fresh temporary directory without VTU or exact.csv (the tests evaluate the exact
- * solution directly).
+ * Runs `prm_file` (relative to the source tree) with the overrides applied after the file, in a
+ * fresh temporary directory (removed afterwards) without VTU or exact.csv: the tests read the
+ * in-memory history and evaluate references directly.
  */
 BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
+
+/** The same for an axisymmetric mesh problem. */
+MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
 
 /**
  * History rows strictly inside the exact contact interval (first interface), minus the samples

@@ -1,0 +1,40 @@
+#!/usr/bin/python3
+"""Compares two history.csv files column by column.
+
+Usage: compare_histories.py A.csv B.csv TOLERANCE
+Passes (exit 0) when both have the same columns and rows and, for every column except
+newton_iterations, max |a - b| <= TOLERANCE * max |a| over that column; prints the worst column.
+"""
+import csv
+import sys
+
+
+def read(path):
+    with open(path, newline="") as handle:
+        rows = list(csv.reader(handle))
+    return rows[0], [[float(value) for value in row] for row in rows[1:]]
+
+
+def main():
+    names_a, rows_a = read(sys.argv[1])
+    names_b, rows_b = read(sys.argv[2])
+    tolerance = float(sys.argv[3])
+    if names_a != names_b or len(rows_a) != len(rows_b):
+        print(f"different shapes: {len(names_a)}x{len(rows_a)} vs {len(names_b)}x{len(rows_b)}")
+        return 1
+    worst_name, worst = "", 0.0
+    for column, name in enumerate(names_a):
+        if name == "newton_iterations":
+            continue
+        scale = max(abs(row[column]) for row in rows_a)
+        difference = max(abs(a[column] - b[column]) for a, b in zip(rows_a, rows_b))
+        relative = difference / scale if scale > 0 else difference
+        if relative > worst:
+            worst_name, worst = name, relative
+    print(f"{len(rows_a)} rows; largest relative difference {worst:.3e} in column '{worst_name}'"
+          f" (tolerance {tolerance:g})")
+    return 0 if worst <= tolerance else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
