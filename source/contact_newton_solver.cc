@@ -6,6 +6,7 @@
 #include <deal.II/lac/trilinos_solver.h>
 
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 namespace dyncontact
@@ -108,8 +109,11 @@ ContactNewtonSolver<dim>::solve_linear_system(const Vector<double>& right_hand_s
 }
 
 template <int dim>
-typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
-    const Vector<double>& predictor, const double inertia_factor, Vector<double>& increment)
+typename ContactNewtonSolver<dim>::Report
+ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
+                                const double inertia_factor,
+                                const Vector<double>& safe_increment,
+                                Vector<double>& increment)
 {
   const types::global_dof_index n_dofs = dof_handler.n_dofs();
   const unsigned int n_pairs           = contact.n_pairs();
@@ -121,52 +125,117 @@ typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
 
   // A pair enters when the unconstrained predicted gap is negative.
   bool active_set_changed = contact.update_active_set(displacement, gap_tolerance, 0.);
-  for (unsigned int linear_solves = 0;; ++linear_solves)
+
+  // Backtracking line search: the state before the last Newton update, the update itself and the
+  // fraction of it taken. An update is halved (up to max_backtracks times) when the residual at
+  // its end could not be evaluated (an inverted element) or grew with the active set unchanged.
+  struct StateBeforeUpdate
   {
-    matrix = 0.;
-    bodies.assemble_internal_force(displacement, internal_force_values, &matrix);
+    Vector<double> increment;
+    typename ContactConstraints<dim>::State contact;
+    double residual_norm;
+  };
+  std::optional<StateBeforeUpdate> before_update;
+  Vector<double> newton_update;
+  double step_length                    = 1.;
+  constexpr unsigned int max_backtracks = 10;
+  const auto take_step                  = [&](const double length)
+  {
+    increment = before_update->increment;
     for (types::global_dof_index i = 0; i < n_dofs; ++i)
-    {
-      inertia[i] = inertia_factor * lumped_mass[i] * increment[i];
-      if (dof_handler.locally_owned_dofs().is_element(i))
-        matrix.add(i, i, inertia_factor * lumped_mass[i]);
-    }
-    contact_force = 0.;
-    contact.add_contact_forces(contact_force);
-    contact.assemble_constraint_rows(displacement,
-                                     inactive_diagonal,
-                                     owns_multiplier_rows ? &matrix : nullptr,
-                                     constraint_residual);
-    matrix.compress(VectorOperation::add);
-    matrix.clear_rows(locally_owned_fixed_rows, inactive_diagonal);
-
-    double force_residual_squared = 0.;
-    for (types::global_dof_index i = 0; i < n_dofs; ++i)
-    {
-      residual[i] = is_fixed[i] ? 0. : inertia[i] + internal_force_values[i] - contact_force[i];
-      force_residual_squared += residual[i] * residual[i];
-    }
+      increment[i] += length * newton_update[i];
+    displacement = predictor;
+    displacement += increment;
+    contact.restore(before_update->contact);
     for (unsigned int k = 0; k < n_pairs; ++k)
-      residual[n_dofs + k] = constraint_residual[k];
-    // The force terms, plus the size of the terms that cancel in K u: near a zero crossing of a
-    // vibration the force terms vanish but the round-off of evaluating K u does not.
-    double largest_diagonal = 0.;
-    for (const auto row : dof_handler.locally_owned_dofs())
-      largest_diagonal = std::max(largest_diagonal, std::abs(matrix.diag_element(row)));
-    largest_diagonal         = Utilities::MPI::max(largest_diagonal, communicator);
-    const double force_scale = inertia.l2_norm() + internal_force_values.l2_norm() +
-                               contact_force.l2_norm() + largest_diagonal * displacement.l2_norm();
-    const double residual_norm  = std::sqrt(force_residual_squared);
-    double constraint_violation = 0.;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      if (contact.is_active(k))
-        constraint_violation = std::max(constraint_violation, std::abs(constraint_residual[k]));
+      multiplier_increment[k] = length * newton_update[n_dofs + k];
+    contact.add_multiplier_increment(multiplier_increment);
+  };
 
-    if (!std::isfinite(residual_norm))
-      throw SolverFailure("the residual is not finite; the time integration is unstable.");
-    if (!active_set_changed && residual_norm <= parameters.residual_tolerance * force_scale &&
-        constraint_violation <= gap_tolerance)
-      return {linear_solves, residual_norm};
+  bool started_from_safe_increment = false;
+  for (unsigned int linear_solves = 0;;)
+  {
+    std::string evaluation_failure;
+    double residual_norm = 0., force_scale = 0., constraint_violation = 0.;
+    try
+    {
+      matrix = 0.;
+      bodies.assemble_internal_force(displacement, internal_force_values, &matrix);
+    }
+    catch (const SolverFailure& failure)
+    {
+      evaluation_failure = failure.what();
+      matrix.compress(VectorOperation::add); // flush entries added before the failure
+    }
+    if (evaluation_failure.empty())
+    {
+      for (types::global_dof_index i = 0; i < n_dofs; ++i)
+      {
+        inertia[i] = inertia_factor * lumped_mass[i] * increment[i];
+        if (dof_handler.locally_owned_dofs().is_element(i))
+          matrix.add(i, i, inertia_factor * lumped_mass[i]);
+      }
+      contact_force = 0.;
+      contact.add_contact_forces(contact_force);
+      contact.assemble_constraint_rows(displacement,
+                                       inactive_diagonal,
+                                       owns_multiplier_rows ? &matrix : nullptr,
+                                       constraint_residual);
+      matrix.compress(VectorOperation::add);
+      matrix.clear_rows(locally_owned_fixed_rows, inactive_diagonal);
+
+      double force_residual_squared = 0.;
+      for (types::global_dof_index i = 0; i < n_dofs; ++i)
+      {
+        residual[i] = is_fixed[i] ? 0. : inertia[i] + internal_force_values[i] - contact_force[i];
+        force_residual_squared += residual[i] * residual[i];
+      }
+      for (unsigned int k = 0; k < n_pairs; ++k)
+        residual[n_dofs + k] = constraint_residual[k];
+      // The force terms, plus the size of the terms that cancel in K u: near a zero crossing of a
+      // vibration the force terms vanish but the round-off of evaluating K u does not.
+      double largest_diagonal = 0.;
+      for (const auto row : dof_handler.locally_owned_dofs())
+        largest_diagonal = std::max(largest_diagonal, std::abs(matrix.diag_element(row)));
+      largest_diagonal = Utilities::MPI::max(largest_diagonal, communicator);
+      force_scale = inertia.l2_norm() + internal_force_values.l2_norm() + contact_force.l2_norm() +
+                    largest_diagonal * displacement.l2_norm();
+      residual_norm = std::sqrt(force_residual_squared);
+      for (unsigned int k = 0; k < n_pairs; ++k)
+        if (contact.is_active(k))
+          constraint_violation = std::max(constraint_violation, std::abs(constraint_residual[k]));
+
+      if (!active_set_changed && residual_norm <= parameters.residual_tolerance * force_scale &&
+          constraint_violation <= gap_tolerance)
+        return {linear_solves, residual_norm};
+    }
+
+    const bool step_failed =
+        !evaluation_failure.empty() || !std::isfinite(residual_norm) ||
+        (before_update && !active_set_changed && residual_norm > before_update->residual_norm);
+    if (!evaluation_failure.empty() && !before_update && !started_from_safe_increment)
+    {
+      started_from_safe_increment = true;
+      increment                   = safe_increment;
+      displacement                = predictor;
+      displacement += increment;
+      active_set_changed = contact.update_active_set(displacement, gap_tolerance, 0.);
+      continue;
+    }
+    if (step_failed && before_update && step_length > std::pow(0.5, max_backtracks))
+    {
+      step_length /= 2.;
+      take_step(step_length);
+      active_set_changed = contact.update_active_set(
+          displacement, gap_tolerance, parameters.residual_tolerance * force_scale);
+      continue;
+    }
+    if (!evaluation_failure.empty() || !std::isfinite(residual_norm))
+      throw SolverFailure((evaluation_failure.empty() ? std::string("the residual is not finite")
+                                                      : evaluation_failure) +
+                          (before_update ? " (the line search halved the last Newton update " +
+                                               std::to_string(max_backtracks) + " times)"
+                                         : " (at the initial guess)"));
     if (linear_solves == parameters.max_iterations)
     {
       std::ostringstream message;
@@ -180,14 +249,11 @@ typename ContactNewtonSolver<dim>::Report ContactNewtonSolver<dim>::solve(
     }
 
     residual *= -1.;
-    const Vector<double> newton_update = solve_linear_system(residual);
-    for (types::global_dof_index i = 0; i < n_dofs; ++i)
-      increment[i] += newton_update[i];
-    displacement = predictor;
-    displacement += increment;
-    for (unsigned int k = 0; k < n_pairs; ++k)
-      multiplier_increment[k] = newton_update[n_dofs + k];
-    contact.add_multiplier_increment(multiplier_increment);
+    newton_update = solve_linear_system(residual);
+    ++linear_solves;
+    before_update = StateBeforeUpdate{increment, contact.state(), residual_norm};
+    step_length   = 1.;
+    take_step(step_length);
     active_set_changed = contact.update_active_set(
         displacement, gap_tolerance, parameters.residual_tolerance * force_scale);
   }

@@ -146,57 +146,70 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
     internal_force->reinit(dof_handler.n_dofs());
   if (strain_energy != nullptr)
     *strain_energy = 0.;
-  for (const auto& cell : dof_handler.active_cell_iterators())
+  // A failing material point (an inverted element) must not leave this rank out of the
+  // collective sums below: remember the failure, finish the collectives, then fail on all ranks.
+  std::string failure;
+  try
   {
-    if (!cell->is_locally_owned())
-      continue;
-    fe_values.reinit(cell);
-    cell->get_dof_indices(local_dofs);
-    cell_force               = 0.;
-    cell_tangent             = 0.;
-    const Material& material = *bodies[cell->material_id()].material;
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
+    for (const auto& cell : dof_handler.active_cell_iterators())
     {
-      const Point<dim>& X = fe_values.quadrature_point(q);
-      const PointDisplacement<dim> u =
-          interpolate_displacement(fe_values, local_dofs, displacement, q);
-      const Tensor<2, 3> F = kinematics.deformation_gradient(u.gradient, u.value, X);
-      const double dV      = fe_values.JxW(q) * kinematics.measure_factor(X, cell->material_id());
-      if (strain_energy != nullptr)
-        *strain_energy += material.strain_energy_density(F) * dV;
-      if (internal_force == nullptr && tangent == nullptr)
+      if (!cell->is_locally_owned())
         continue;
-
-      const Tensor<2, 3> P = material.first_piola_kirchhoff_stress(F);
-      for (unsigned int i = 0; i < n_local; ++i)
-        variations[i] =
-            kinematics.deformation_gradient_variation(fe.system_to_component_index(i).first,
-                                                      fe_values.shape_value(i, q),
-                                                      fe_values.shape_grad(i, q),
-                                                      X);
-      for (unsigned int i = 0; i < n_local; ++i)
-        cell_force[i] += scalar_product(P, variations[i]) * dV;
-      if (tangent != nullptr)
+      fe_values.reinit(cell);
+      cell->get_dof_indices(local_dofs);
+      cell_force               = 0.;
+      cell_tangent             = 0.;
+      const Material& material = *bodies[cell->material_id()].material;
+      for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
-        const Tensor<4, 3> dP_dF = material.stress_tangent(F);
-        for (unsigned int j = 0; j < n_local; ++j)
-          tangent_times_variation[j] = double_contract<2, 0, 3, 1>(dP_dF, variations[j]);
+        const Point<dim>& X = fe_values.quadrature_point(q);
+        const PointDisplacement<dim> u =
+            interpolate_displacement(fe_values, local_dofs, displacement, q);
+        const Tensor<2, 3> F = kinematics.deformation_gradient(u.gradient, u.value, X);
+        const double dV      = fe_values.JxW(q) * kinematics.measure_factor(X, cell->material_id());
+        if (strain_energy != nullptr)
+          *strain_energy += material.strain_energy_density(F) * dV;
+        if (internal_force == nullptr && tangent == nullptr)
+          continue;
+
+        const Tensor<2, 3> P = material.first_piola_kirchhoff_stress(F);
         for (unsigned int i = 0; i < n_local; ++i)
+          variations[i] =
+              kinematics.deformation_gradient_variation(fe.system_to_component_index(i).first,
+                                                        fe_values.shape_value(i, q),
+                                                        fe_values.shape_grad(i, q),
+                                                        X);
+        for (unsigned int i = 0; i < n_local; ++i)
+          cell_force[i] += scalar_product(P, variations[i]) * dV;
+        if (tangent != nullptr)
+        {
+          const Tensor<4, 3> dP_dF = material.stress_tangent(F);
           for (unsigned int j = 0; j < n_local; ++j)
-            cell_tangent(i, j) += scalar_product(variations[i], tangent_times_variation[j]) * dV;
+            tangent_times_variation[j] = double_contract<2, 0, 3, 1>(dP_dF, variations[j]);
+          for (unsigned int i = 0; i < n_local; ++i)
+            for (unsigned int j = 0; j < n_local; ++j)
+              cell_tangent(i, j) += scalar_product(variations[i], tangent_times_variation[j]) * dV;
+        }
       }
+      if (internal_force != nullptr)
+        for (unsigned int i = 0; i < n_local; ++i)
+          (*internal_force)[local_dofs[i]] += cell_force[i];
+      if (tangent != nullptr)
+        tangent->add(local_dofs, cell_tangent);
     }
-    if (internal_force != nullptr)
-      for (unsigned int i = 0; i < n_local; ++i)
-        (*internal_force)[local_dofs[i]] += cell_force[i];
-    if (tangent != nullptr)
-      tangent->add(local_dofs, cell_tangent);
+  }
+  catch (const SolverFailure& error)
+  {
+    failure = error.what();
   }
   if (internal_force != nullptr)
     sum_over_ranks(*internal_force);
   if (strain_energy != nullptr)
     *strain_energy =
         Utilities::MPI::sum(*strain_energy, dof_handler.get_triangulation().get_communicator());
+  const MPI_Comm communicator = dof_handler.get_triangulation().get_communicator();
+  if (Utilities::MPI::max(failure.empty() ? 0 : 1, communicator) > 0)
+    throw SolverFailure(failure.empty() ? "a material point failed on another MPI rank." : failure);
 }
 
 template class ElasticBodies<1>;

@@ -152,8 +152,11 @@ unsigned int Simulation<dim>::do_time_step()
                        old_acceleration = acceleration;
   Vector<double> predictor, increment(dof_handler.n_dofs());
   newmark.predict(old_displacement, old_velocity, old_acceleration, predictor);
-  const auto report = solver->solve(predictor, newmark.inertia_factor(), increment);
-  displacement      = predictor;
+  Vector<double> last_configuration = old_displacement; // as an increment over the predictor
+  last_configuration -= predictor;
+  const auto report =
+      solver->solve(predictor, newmark.inertia_factor(), last_configuration, increment);
+  displacement = predictor;
   displacement += increment;
   newmark.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
   if (newmark.scheme() == NewmarkScheme::modified)

@@ -62,6 +62,19 @@ public:
   unsigned int n_active() const;
   bool is_active(unsigned int pair) const { return active[pair]; }
 
+  /** The active set and multipliers, to be restored if a Newton step is taken back. */
+  struct State
+  {
+    std::vector<bool> active;
+    Vector<double> multipliers;
+  };
+  State state() const { return {active, multiplier_values}; }
+  void restore(const State& saved)
+  {
+    active            = saved.active;
+    multiplier_values = saved.multipliers;
+  }
+
   /** Gap of candidate `pair` at displacement u (negative = penetration). */
   double gap(unsigned int pair, const Vector<double>& displacement) const;
 

@@ -24,7 +24,9 @@ namespace dyncontact
  * Newton); the step has converged when the residual is below the tolerance times the size of the
  * force terms (inertia, internal, contact, and max diag(K_eff) |u|, the round-off scale of K u),
  * the active constraints hold to the gap tolerance, and the last update left the active set
- * unchanged. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
+ * unchanged. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment. A backtracking
+ * line search halves an update (up to 10 times) when the residual at its end cannot be evaluated
+ * (an inverted element) or grows while the active set stays the same.
  *
  * Parallel layout: rows of the matrix are distributed like the DoFs, the multiplier rows belong to
  * the last rank; the direct solver is Amesos KLU on one rank and Amesos MUMPS on several. Vectors
@@ -58,10 +60,16 @@ public:
   /**
    * Solves the step for the increment u_{n+1} - u~ over the predictor u~ (initial guess: the
    * value `increment` holds on entry, usually zero); on exit u_{n+1} = predictor + increment.
-   * The contact multipliers and active set are updated in place. Throws SolverFailure if Newton
-   * does not converge within the iteration limit or the linear solver fails.
+   * The contact multipliers and active set are updated in place. If the residual cannot be
+   * evaluated at the initial guess (e.g. the predictor inverts an element), Newton restarts from
+   * `safe_increment` (typically u_n - u~, i.e. from the last converged configuration). Throws
+   * SolverFailure if Newton does not converge within the iteration limit or the linear solver
+   * fails.
    */
-  Report solve(const Vector<double>& predictor, double inertia_factor, Vector<double>& increment);
+  Report solve(const Vector<double>& predictor,
+               double inertia_factor,
+               const Vector<double>& safe_increment,
+               Vector<double>& increment);
 
   /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */
   const Vector<double>& internal_force() const { return internal_force_values; }
