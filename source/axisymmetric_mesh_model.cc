@@ -100,6 +100,14 @@ std::vector<Node<2>> AxisymmetricMeshModel::monitor_nodes(const NodeIndex<2>& no
   return monitors;
 }
 
+std::vector<SurfaceTraction<2>> AxisymmetricMeshModel::surface_tractions() const
+{
+  std::vector<SurfaceTraction<2>> tractions;
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+    tractions.push_back({SphereMeshIds::surface(body), bodies.bodies[body].surface_traction});
+  return tractions;
+}
+
 Tensor<1, 2> AxisymmetricMeshModel::impact_direction() const
 {
   Tensor<1, 2> axial;

@@ -212,9 +212,10 @@ void ContactConstraints<dim>::apply_rate_correction(const Newmark& newmark,
 }
 
 template <int dim>
-double ContactConstraints<dim>::recovered_contact_force(const Vector<double>& lumped_mass,
-                                                        const Vector<double>& acceleration,
-                                                        const Vector<double>& internal_force) const
+double
+ContactConstraints<dim>::recovered_contact_force(const Vector<double>& lumped_mass,
+                                                 const Vector<double>& acceleration,
+                                                 const Vector<double>& net_internal_force) const
 {
   double force = 0.;
   for (unsigned int k = 0; k < pairs.size(); ++k)
@@ -222,7 +223,8 @@ double ContactConstraints<dim>::recovered_contact_force(const Vector<double>& lu
       for (unsigned int d = 0; d < dim; ++d)
       {
         const types::global_dof_index dof = pairs[k].node_a.dofs[d];
-        force -= pairs[k].normal[d] * (lumped_mass[dof] * acceleration[dof] + internal_force[dof]);
+        force -=
+            pairs[k].normal[d] * (lumped_mass[dof] * acceleration[dof] + net_internal_force[dof]);
       }
   return force;
 }

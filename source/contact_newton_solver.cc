@@ -112,6 +112,7 @@ template <int dim>
 typename ContactNewtonSolver<dim>::Report
 ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
                                 const double inertia_factor,
+                                const Vector<double>& external_force,
                                 const Vector<double>& safe_increment,
                                 Vector<double>& increment)
 {
@@ -187,7 +188,9 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       double force_residual_squared = 0.;
       for (types::global_dof_index i = 0; i < n_dofs; ++i)
       {
-        residual[i] = is_fixed[i] ? 0. : inertia[i] + internal_force_values[i] - contact_force[i];
+        residual[i] = is_fixed[i] ? 0.
+                                  : inertia[i] + internal_force_values[i] - external_force[i] -
+                                        contact_force[i];
         force_residual_squared += residual[i] * residual[i];
       }
       for (unsigned int k = 0; k < n_pairs; ++k)
@@ -198,8 +201,8 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       for (const auto row : dof_handler.locally_owned_dofs())
         largest_diagonal = std::max(largest_diagonal, std::abs(matrix.diag_element(row)));
       largest_diagonal = Utilities::MPI::max(largest_diagonal, communicator);
-      force_scale = inertia.l2_norm() + internal_force_values.l2_norm() + contact_force.l2_norm() +
-                    largest_diagonal * displacement.l2_norm();
+      force_scale = inertia.l2_norm() + internal_force_values.l2_norm() + external_force.l2_norm() +
+                    contact_force.l2_norm() + largest_diagonal * displacement.l2_norm();
       residual_norm = std::sqrt(force_residual_squared);
       for (unsigned int k = 0; k < n_pairs; ++k)
         if (contact.is_active(k))

@@ -104,6 +104,25 @@ std::string demangle_entry_path(const std::string& mangled)
   return path;
 }
 
+/** Parses the 2-component ParsedFunction in subsection `name`, naming it in any error. */
+std::shared_ptr<Functions::ParsedFunction<2>>
+parse_function(ParameterHandler& prm, const std::string& name, const std::string& section)
+{
+  auto function = std::make_shared<Functions::ParsedFunction<2>>(2);
+  prm.enter_subsection(name);
+  try
+  {
+    function->parse_parameters(prm);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    prm.leave_subsection();
+    throw InputError(section + "/" + name + ": " + exception_text(exception));
+  }
+  prm.leave_subsection();
+  return function;
+}
+
 std::string bar_section(const unsigned int bar)
 {
   return "Bar " + std::to_string(bar + 1);
@@ -231,6 +250,10 @@ void BodyParameters::declare_parameters(ParameterHandler& prm)
   prm.enter_subsection("Initial velocity");
   Functions::ParsedFunction<2>::declare_parameters(prm, 2);
   prm.leave_subsection();
+  // Documented in the README: (T_r; T_z) of x = r, y = z, t, force per unit reference area.
+  prm.enter_subsection("Surface traction");
+  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
+  prm.leave_subsection();
 }
 
 void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
@@ -245,18 +268,8 @@ void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& 
   const std::vector<std::string> point = Utilities::split_string_list(prm.get("monitor point"));
   monitor_point =
       Point<2>(Utilities::string_to_double(point[0]), Utilities::string_to_double(point[1]));
-  prm.enter_subsection("Initial velocity");
-  initial_velocity = std::make_shared<Functions::ParsedFunction<2>>(2);
-  try
-  {
-    initial_velocity->parse_parameters(prm);
-  }
-  catch (const ExceptionBase& exception)
-  {
-    prm.leave_subsection();
-    throw InputError(section + "/Initial velocity: " + exception_text(exception));
-  }
-  prm.leave_subsection();
+  initial_velocity = parse_function(prm, "Initial velocity", section);
+  surface_traction = parse_function(prm, "Surface traction", section);
 }
 
 void BodiesParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_bodies)

@@ -9,6 +9,12 @@ std::vector<types::global_dof_index> ProblemModel<dim>::fixed_dofs(const NodeInd
 }
 
 template <int dim>
+std::vector<SurfaceTraction<dim>> ProblemModel<dim>::surface_tractions() const
+{
+  return {};
+}
+
+template <int dim>
 void ProblemModel<dim>::write_reference(const std::string&,
                                         const std::vector<double>&,
                                         const std::vector<Node<dim>>&) const

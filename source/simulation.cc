@@ -51,7 +51,9 @@ void Simulation<dim>::setup()
       dof_handler, mapping, *kinematics, model->body_materials());
   mass       = bodies->lumped_mass();
   fixed_dofs = model->fixed_dofs(*nodes);
-  contact    = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
+  loads      = std::make_unique<SurfaceTractions<dim>>(
+      dof_handler, mapping, *kinematics, model->surface_tractions());
+  contact = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
                                                       parameters.contact.formulation);
   solver =
       std::make_unique<ContactNewtonSolver<dim>>(dof_handler,
@@ -136,11 +138,12 @@ void Simulation<dim>::set_initial_conditions()
     for (unsigned int d = 0; d < dim; ++d)
       velocity[node.dofs[d]] = v0[d];
   }
-  // Initial acceleration from equilibrium, M a_0 = -Q(u_0) (no loads, no contact at t = 0).
+  // Initial acceleration from equilibrium, M a_0 = W(0) - Q(u_0) (no contact at t = 0).
   Vector<double> internal_force;
   bodies->assemble_internal_force(displacement, internal_force, nullptr);
+  external_force = loads->force(0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    acceleration[i] = -internal_force[i] / mass[i];
+    acceleration[i] = (external_force[i] - internal_force[i]) / mass[i];
   for (const auto dof : fixed_dofs)
     velocity[dof] = acceleration[dof] = 0.;
 }
@@ -154,8 +157,9 @@ unsigned int Simulation<dim>::do_time_step()
   newmark.predict(old_displacement, old_velocity, old_acceleration, predictor);
   Vector<double> last_configuration = old_displacement; // as an increment over the predictor
   last_configuration -= predictor;
-  const auto report =
-      solver->solve(predictor, newmark.inertia_factor(), last_configuration, increment);
+  external_force    = loads->force(time);
+  const auto report = solver->solve(
+      predictor, newmark.inertia_factor(), external_force, last_configuration, increment);
   displacement = predictor;
   displacement += increment;
   newmark.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
@@ -170,6 +174,14 @@ unsigned int Simulation<dim>::do_time_step()
 }
 
 template <int dim>
+Vector<double> Simulation<dim>::net_internal_force() const
+{
+  Vector<double> net = solver->internal_force();
+  net -= external_force;
+  return net;
+}
+
+template <int dim>
 void Simulation<dim>::record_step(const unsigned int step, const unsigned int linear_solves)
 {
   double kinetic = 0., acceleration_energy = 0.;
@@ -180,8 +192,7 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
   }
   const double strain = bodies->strain_energy(displacement);
   const double contact_force =
-      step == 0 ? 0.
-                : contact->recovered_contact_force(mass, acceleration, solver->internal_force());
+      step == 0 ? 0. : contact->recovered_contact_force(mass, acceleration, net_internal_force());
 
   std::vector<double> row        = {time,
                                     contact_force,

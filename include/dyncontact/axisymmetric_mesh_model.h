@@ -32,6 +32,8 @@ public:
   std::vector<ContactPair<2>> contact_pairs(const NodeIndex<2>& nodes) const override;
   std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
   std::vector<Node<2>> monitor_nodes(const NodeIndex<2>& nodes) const override;
+  /** Body b's `Surface traction` on its surface (boundary id SphereMeshIds::surface(b)). */
+  std::vector<SurfaceTraction<2>> surface_tractions() const override;
   Tensor<1, 2> impact_direction() const override;
   void print_summary(std::ostream& out, double time_step) const override;
 

@@ -122,13 +122,14 @@ public:
 
   /**
    * Total interface force, compression positive, recovered from the equations of motion of the
-   * body-A nodes of the active pairs: the sum of -n . (M a + Q(u)) at those nodes. It equals the
-   * sum of the multipliers for the classical scheme and differs at an impact step of the
-   * modified one, whose corrected accelerations carry the interface force.
+   * body-A nodes of the active pairs: the sum of -n . (M a + Q(u) - W) at those nodes
+   * (`net_internal_force` = Q(u) - W). It equals the sum of the multipliers for the classical
+   * scheme and differs at an impact step of the modified one, whose corrected accelerations carry
+   * the interface force.
    */
   double recovered_contact_force(const Vector<double>& lumped_mass,
                                  const Vector<double>& acceleration,
-                                 const Vector<double>& internal_force) const;
+                                 const Vector<double>& net_internal_force) const;
 
   /** Sum of the multipliers of the active pairs. */
   double total_multiplier() const;

@@ -18,7 +18,7 @@ namespace dyncontact
 /**
  * Solves one implicit time step with contact: find the increment over the Newmark predictor and
  * the multipliers such that
- *   c M (u - u~) + Q(u) - G^T lambda = 0,  and the constraint rows of ContactConstraints,
+ *   c M (u - u~) + Q(u) - W - G^T lambda = 0,  and the constraint rows of ContactConstraints,
  * with c = 1/(beta dt^2) and u = u~ + increment, by Newton's method on the symmetric saddle-point
  * system [K_eff, -G^T; -G, -D]. The active set is updated after every linear solve (a semi-smooth
  * Newton); the step has converged when the residual is below the tolerance times the size of the
@@ -58,16 +58,17 @@ public:
                       double length_scale);
 
   /**
-   * Solves the step for the increment u_{n+1} - u~ over the predictor u~ (initial guess: the
-   * value `increment` holds on entry, usually zero); on exit u_{n+1} = predictor + increment.
-   * The contact multipliers and active set are updated in place. If the residual cannot be
-   * evaluated at the initial guess (e.g. the predictor inverts an element), Newton restarts from
-   * `safe_increment` (typically u_n - u~, i.e. from the last converged configuration). Throws
-   * SolverFailure if Newton does not converge within the iteration limit or the linear solver
-   * fails.
+   * Solves the step, with external forces W at t_{n+1}, for the increment u_{n+1} - u~ over the
+   * predictor u~ (initial guess: the value `increment` holds on entry, usually zero); on exit
+   * u_{n+1} = predictor + increment. The contact multipliers and active set are updated in place.
+   * If the residual cannot be evaluated at the initial guess (e.g. the predictor inverts an
+   * element), Newton restarts from `safe_increment` (typically u_n - u~, i.e. from the last
+   * converged configuration). Throws SolverFailure if Newton does not converge within the iteration
+   * limit or the linear solver fails.
    */
   Report solve(const Vector<double>& predictor,
                double inertia_factor,
+               const Vector<double>& external_force,
                const Vector<double>& safe_increment,
                Vector<double>& increment);
 

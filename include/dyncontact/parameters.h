@@ -146,6 +146,7 @@ struct BodyParameters
   double density;
   Point<2> monitor_point;
   std::shared_ptr<Functions::ParsedFunction<2>> initial_velocity;
+  std::shared_ptr<Functions::ParsedFunction<2>> surface_traction;
 
   static void declare_parameters(ParameterHandler& prm);
   void parse_parameters(ParameterHandler& prm, const std::string& section);

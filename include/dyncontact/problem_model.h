@@ -5,6 +5,7 @@
 #include <dyncontact/global.h>
 #include <dyncontact/kinematics.h>
 #include <dyncontact/node_index.h>
+#include <dyncontact/surface_tractions.h>
 
 #include <deal.II/grid/tria.h>
 
@@ -56,6 +57,9 @@ public:
 
   /** DoFs held at zero for all time (e.g. u_r on the symmetry axis). The default: none. */
   virtual std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<dim>& nodes) const;
+
+  /** Dead surface tractions (external loads). The default: none. */
+  virtual std::vector<SurfaceTraction<dim>> surface_tractions() const;
 
   /** One node per body ("tip", its contact node) whose u, v, a the history reports. */
   virtual std::vector<Node<dim>> monitor_nodes(const NodeIndex<dim>& nodes) const = 0;

@@ -10,6 +10,7 @@
 #include <dyncontact/node_index.h>
 #include <dyncontact/parameters.h>
 #include <dyncontact/problem_model.h>
+#include <dyncontact/surface_tractions.h>
 
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -72,6 +73,8 @@ private:
   void set_initial_conditions();
   unsigned int do_time_step();
   void record_step(unsigned int step, unsigned int linear_solves);
+  /** Q(u) - W at the last solve: what the contact force balances at a node. */
+  Vector<double> net_internal_force() const;
   std::vector<std::string> history_columns() const;
 
   const RunParameters parameters;
@@ -88,6 +91,8 @@ private:
   std::unique_ptr<ElasticBodies<dim>> bodies;
   Vector<double> mass;
   std::vector<types::global_dof_index> fixed_dofs;
+  std::unique_ptr<SurfaceTractions<dim>> loads;
+  Vector<double> external_force; ///< W at the current time
   std::unique_ptr<ContactConstraints<dim>> contact;
   std::unique_ptr<ContactNewtonSolver<dim>> solver;
   std::vector<Node<dim>> monitors;

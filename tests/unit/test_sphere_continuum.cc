@@ -174,3 +174,27 @@ TEST(SphereContinuum, StepControlCarriesRunPastInvertingPredictor)
   EXPECT_LE(drift, 0.05);
 }
 } // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+// Surface tractions: a sphere at rest under a uniform axial nominal traction T_z = 1 on its whole
+// surface gains momentum at the rate of the total force, the integral of 2 pi r over the meshed
+// surface, i.e. 4 pi R^2 up to the surface-area error of the default mesh (same order as its
+// volume error, 2e-6; bound 1e-5). The trapezoidal rule integrates a constant force exactly, so
+// no time-step error enters.
+TEST(SphereContinuum, UniformSurfaceTractionGivesMomentumAtRateOfTotalForce)
+{
+  const MeshRun run         = run_mesh_case(free_vibration,
+                                    {"Time integration/end time=0.023",
+                                             "Bodies/Body 1/Initial velocity/Function expression=0; 0",
+                                             "Bodies/Body 1/Surface traction/Function expression=0; 1"});
+  const double t_end        = run.history().column("time").back();
+  const double momentum     = run.history().column("momentum_1").back();
+  const double total_force  = 4. * numbers::PI * 8. * 8.;
+  const double relative_gap = (momentum - total_force * t_end) / (total_force * t_end);
+  std::cout << "  momentum at t = " << t_end << ": " << momentum
+            << ", 4 pi R^2 t = " << total_force * t_end << ", relative difference " << relative_gap
+            << "\n";
+  EXPECT_LE(std::abs(relative_gap), 1e-5);
+}
+} // namespace dyncontact::testing
