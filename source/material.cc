@@ -12,24 +12,6 @@ const std::string linear_elastic_name      = "linear elastic";
 const std::string st_venant_kirchhoff_name = "st venant-kirchhoff";
 const std::string neo_hookean_name         = "neo-hookean";
 
-struct LameConstants
-{
-  double lambda;
-  double mu;
-};
-
-/** The Lame constants of E and nu; throws InputError unless E > 0 and -1 < nu < 0.5. */
-LameConstants lame_constants(const double youngs_modulus, const double poissons_ratio)
-{
-  if (!(youngs_modulus > 0.))
-    throw InputError("Young's modulus must be > 0 (got " + format_number(youngs_modulus) + ").");
-  if (!(poissons_ratio > -1. && poissons_ratio < 0.5))
-    throw InputError("Poisson's ratio must lie in (-1, 0.5) (got " + format_number(poissons_ratio) +
-                     ").");
-  return {youngs_modulus * poissons_ratio / ((1. + poissons_ratio) * (1. - 2. * poissons_ratio)),
-          youngs_modulus / (2. * (1. + poissons_ratio))};
-}
-
 Tensor<2, 3> identity()
 {
   return unit_symmetric_tensor<3>();
@@ -56,12 +38,31 @@ double positive_jacobian(const Tensor<2, 3>& F)
 }
 } // namespace
 
+namespace
+{
+/** Young's modulus after checking E > 0 and -1 < nu < 0.5 (InputError otherwise). */
+double checked_youngs_modulus(const double youngs_modulus, const double poissons_ratio)
+{
+  if (!(youngs_modulus > 0.))
+    throw InputError("Young's modulus must be > 0 (got " + format_number(youngs_modulus) + ").");
+  if (!(poissons_ratio > -1. && poissons_ratio < 0.5))
+    throw InputError("Poisson's ratio must lie in (-1, 0.5) (got " + format_number(poissons_ratio) +
+                     ").");
+  return youngs_modulus;
+}
+} // namespace
+
+IsotropicMaterial::IsotropicMaterial(const double youngs_modulus, const double poissons_ratio)
+    : lame_lambda(checked_youngs_modulus(youngs_modulus, poissons_ratio) * poissons_ratio /
+                  ((1. + poissons_ratio) * (1. - 2. * poissons_ratio))),
+      shear_modulus(youngs_modulus / (2. * (1. + poissons_ratio)))
+{
+}
+
 LinearElasticMaterial::LinearElasticMaterial(const double youngs_modulus,
                                              const double poissons_ratio)
+    : IsotropicMaterial(youngs_modulus, poissons_ratio)
 {
-  const LameConstants lame = lame_constants(youngs_modulus, poissons_ratio);
-  lame_lambda              = lame.lambda;
-  shear_modulus            = lame.mu;
   // dP/dF of P = lambda tr(sym grad u) I + 2 mu sym(grad u): minor symmetrization included.
   for (unsigned int i = 0; i < 3; ++i)
     for (unsigned int j = 0; j < 3; ++j)
@@ -91,10 +92,8 @@ Tensor<4, 3> LinearElasticMaterial::stress_tangent(const Tensor<2, 3>&) const
 
 StVenantKirchhoffMaterial::StVenantKirchhoffMaterial(const double youngs_modulus,
                                                      const double poissons_ratio)
+    : IsotropicMaterial(youngs_modulus, poissons_ratio)
 {
-  const LameConstants lame = lame_constants(youngs_modulus, poissons_ratio);
-  lame_lambda              = lame.lambda;
-  shear_modulus            = lame.mu;
 }
 
 double StVenantKirchhoffMaterial::strain_energy_density(const Tensor<2, 3>& F) const
@@ -128,10 +127,8 @@ Tensor<4, 3> StVenantKirchhoffMaterial::stress_tangent(const Tensor<2, 3>& F) co
 
 CompressibleNeoHookeanMaterial::CompressibleNeoHookeanMaterial(const double youngs_modulus,
                                                                const double poissons_ratio)
+    : IsotropicMaterial(youngs_modulus, poissons_ratio)
 {
-  const LameConstants lame = lame_constants(youngs_modulus, poissons_ratio);
-  lame_lambda              = lame.lambda;
-  shear_modulus            = lame.mu;
 }
 
 double CompressibleNeoHookeanMaterial::strain_energy_density(const Tensor<2, 3>& F) const

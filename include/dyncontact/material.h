@@ -31,12 +31,26 @@ public:
 };
 
 /**
+ * The common part of the isotropic laws: their Lame constants lambda and mu, computed from
+ * Young's modulus and Poisson's ratio with the checks E > 0 and -1 < nu < 0.5 (InputError
+ * otherwise). It is not a material law by itself.
+ */
+class IsotropicMaterial : public Material
+{
+protected:
+  IsotropicMaterial(double youngs_modulus, double poissons_ratio);
+
+  const double lame_lambda;
+  const double shear_modulus;
+};
+
+/**
  * Small-strain isotropic linear elasticity, W = lambda/2 (tr eps)^2 + mu eps:eps with
  * eps = sym(F - I), so that P = lambda tr(eps) I + 2 mu eps. Not objective under large rotations;
  * it is the model of the paper's 1D bars. With Poisson's ratio 0 a bar in uniaxial strain is also
  * in uniaxial stress, P_11 = E (F_11 - 1).
  */
-class LinearElasticMaterial : public Material
+class LinearElasticMaterial : public IsotropicMaterial
 {
 public:
   /** Throws InputError unless E > 0 and -1 < nu < 0.5. */
@@ -47,8 +61,6 @@ public:
   Tensor<4, 3> stress_tangent(const Tensor<2, 3>& F) const override;
 
 private:
-  double lame_lambda;
-  double shear_modulus;
   Tensor<4, 3> elasticity_tensor;
 };
 
@@ -61,7 +73,7 @@ private:
  * in compression and gives W a finite value even for an inverted element (det F <= 0), which it
  * therefore does not detect.
  */
-class StVenantKirchhoffMaterial : public Material
+class StVenantKirchhoffMaterial : public IsotropicMaterial
 {
 public:
   /** Throws InputError unless E > 0 and -1 < nu < 0.5. */
@@ -70,10 +82,6 @@ public:
   double strain_energy_density(const Tensor<2, 3>& F) const override;
   Tensor<2, 3> first_piola_kirchhoff_stress(const Tensor<2, 3>& F) const override;
   Tensor<4, 3> stress_tangent(const Tensor<2, 3>& F) const override;
-
-private:
-  double lame_lambda;
-  double shear_modulus;
 };
 
 /**
@@ -87,7 +95,7 @@ private:
  * inverted element is a failed solve (SolverFailure), not a user error. It is not a
  * nearly-incompressible formulation: as nu -> 0.5 a displacement-only discretization locks.
  */
-class CompressibleNeoHookeanMaterial : public Material
+class CompressibleNeoHookeanMaterial : public IsotropicMaterial
 {
 public:
   /** Throws InputError unless E > 0 and -1 < nu < 0.5. */
@@ -97,10 +105,6 @@ public:
   double strain_energy_density(const Tensor<2, 3>& F) const override;
   Tensor<2, 3> first_piola_kirchhoff_stress(const Tensor<2, 3>& F) const override;
   Tensor<4, 3> stress_tangent(const Tensor<2, 3>& F) const override;
-
-private:
-  double lame_lambda;
-  double shear_modulus;
 };
 
 /**

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "simpson.h"
+
 using dyncontact::ElasticSphere;
 using dyncontact::HertzImpactOfIdenticalSpheres;
 
@@ -19,16 +21,7 @@ ElasticSphere paper_sphere(const double rho)
   return {8.0, 5e3, 0.3, rho};
 }
 
-/// Composite Simpson rule for the integral of f over [0, upper] with n_intervals (even) intervals.
-template <typename Function>
-double simpson(const double upper, const unsigned int n_intervals, const Function& f)
-{
-  const double h = upper / n_intervals;
-  double sum     = f(0.0) + f(upper);
-  for (unsigned int i = 1; i < n_intervals; ++i)
-    sum += (i % 2 == 1 ? 4.0 : 2.0) * f(i * h);
-  return sum * h / 3.0;
-}
+using dyncontact::testing::simpson;
 
 /// Approach d and approach rate d' of the Hertz ODE at one instant.
 struct OdeState

@@ -8,6 +8,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "simpson.h"
+
 using dyncontact::breathing_mode_frequency_function;
 using dyncontact::breathing_mode_roots;
 using dyncontact::ElasticSphere;
@@ -34,16 +36,7 @@ double frequency_equation_without_bessel_functions(const double xi, const double
   return a * xi * xi * std::sin(xi) - 4.0 * (std::sin(xi) - xi * std::cos(xi));
 }
 
-/// Composite Simpson rule for the integral of f over [0, upper] with n_intervals (even) intervals.
-template <typename Function>
-double simpson(const double upper, const unsigned int n_intervals, const Function& f)
-{
-  const double h = upper / n_intervals;
-  double sum     = f(0.0) + f(upper);
-  for (unsigned int i = 1; i < n_intervals; ++i)
-    sum += (i % 2 == 1 ? 4.0 : 2.0) * f(i * h);
-  return sum * h / 3.0;
-}
+using dyncontact::testing::simpson;
 } // namespace
 
 // Checks that every computed root is a root of the frequency equation to full double precision:
