@@ -161,7 +161,8 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     try
     {
       matrix = 0.;
-      bodies.assemble_internal_force(displacement, internal_force_values, &matrix);
+      bodies.assemble_internal_force(
+          displacement, internal_force_values, &matrix, &strain_energy_value);
     }
     catch (const SolverFailure& failure)
     {

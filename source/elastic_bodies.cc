@@ -109,9 +109,10 @@ void ElasticBodies<dim>::sum_over_ranks(Vector<double>& values) const
 template <int dim>
 void ElasticBodies<dim>::assemble_internal_force(const Vector<double>& displacement,
                                                  Vector<double>& internal_force,
-                                                 TrilinosWrappers::SparseMatrix* tangent) const
+                                                 TrilinosWrappers::SparseMatrix* tangent,
+                                                 double* strain_energy) const
 {
-  integrate(displacement, &internal_force, tangent, nullptr);
+  integrate(displacement, &internal_force, tangent, strain_energy);
 }
 
 template <int dim>

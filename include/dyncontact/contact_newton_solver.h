@@ -75,6 +75,9 @@ public:
   /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */
   const Vector<double>& internal_force() const { return internal_force_values; }
 
+  /** Strain energy at the same displacement as internal_force(). */
+  double strain_energy() const { return strain_energy_value; }
+
 private:
   /** Solves matrix * solution = right_hand_side; both vectors whole on every rank. */
   Vector<double> solve_linear_system(const Vector<double>& right_hand_side) const;
@@ -92,5 +95,6 @@ private:
   IndexSet locally_owned_rows;
   TrilinosWrappers::SparseMatrix matrix;
   Vector<double> internal_force_values;
+  double strain_energy_value = 0.;
 };
 } // namespace dyncontact

@@ -50,11 +50,13 @@ public:
 
   /**
    * Internal force Q(u) into `internal_force` (overwritten) and, if `tangent` is not null, dQ/du
-   * added into its leading n_dofs x n_dofs block (the caller zeroes it).
+   * added into its leading n_dofs x n_dofs block (the caller zeroes it), and, if
+   * `strain_energy` is not null, the strain energy from the same pass.
    */
   void assemble_internal_force(const Vector<double>& displacement,
                                Vector<double>& internal_force,
-                               TrilinosWrappers::SparseMatrix* tangent) const;
+                               TrilinosWrappers::SparseMatrix* tangent,
+                               double* strain_energy = nullptr) const;
 
   /** Total strain energy, the integral of W(F) over all bodies. */
   double strain_energy(const Vector<double>& displacement) const;
