@@ -75,7 +75,8 @@ int main(int argc, char** argv)
             .run();
       else
         Simulation<2>(parameters,
-                      std::make_unique<AxisymmetricMeshModel>(parameters.mesh, parameters.bodies),
+                      std::make_unique<AxisymmetricMeshModel>(
+                          parameters.mesh, parameters.bodies, parameters.contact),
                       std::cout)
             .run();
       return 0;

@@ -1,15 +1,22 @@
 // Axisymmetric sphere for dyncontact: the half disc r >= 0 of radius R in the (r, z) plane, gmsh
 // coordinates x = r, y = z. All quadrilaterals, from a transfinite "O-grid" (the classic quarter-
 // disc layout mirrored to the half disc): a core quadrilateral on the axis, inside the square
-// [0, a] x [z_c - a, z_c + a] (a = 0.45 R), surrounded by three curved blocks that reach the
-// sphere surface: the pole block, the side block across the equator and the far block.
+// [0, a] x [z_0 - a, z_0 + a] (a = 0.45 R, z_0 = CentreZ + PoleSide * CoreOffset * R: the centre,
+// or shifted toward the contact pole), surrounded by three curved blocks that reach the sphere
+// surface: the pole block, the side block across the equator and the far block.
 //
 // The contact pole is the point of the surface on the axis that faces the other body:
 // z = CentreZ + PoleSide * R. Along the surface the element edges grow geometrically, by one
 // factor, from the contact pole to the far pole, so the smallest elements sit where contact
 // happens; the block corners on the surface sit where that series puts them (at +-45 degrees
-// from the equator only for PoleGrading = 1), and the core corners on the same rays. Along every
-// radial line the elements shrink toward the surface.
+// from the equator only for PoleGrading = 1), and the core corners on the rays from (0, z_0) to
+// them. Along every radial line the elements shrink toward the surface.
+//
+// Strong grading (PoleGrading about 10) narrows the pole block to a few degrees, so with the core
+// centred its elements near the core turn slender (aspect ratio 7-9); CoreOffset 0.3 shortens the
+// pole block radially and keeps every element compact. A graded family that halves the element
+// edges near the contact pole at each level: Refinement 0, 1, 2 with PoleGrading 10 and
+// CoreOffset 0.3 (with R = 8: smallest surface edge 0.26, 0.13, 0.067; aspect ratio <= 2.9).
 //
 // Parameters, settable from outside (gmsh -setnumber NAME VALUE, or dyncontact's read_gmsh_mesh):
 //   R               sphere radius [length], > 0                                           (8)
@@ -21,8 +28,11 @@
 //   RadialDivisions element layers between the core and the surface, integer >= 1        (6)
 //   Refinement      each level doubles Divisions and RadialDivisions, integer >= 0        (0)
 //   PoleGrading     largest / smallest element edge along the surface (far pole / contact
-//                   pole), >= 1; 1 is uniform; beyond about 10 the pole block is slender  (3)
+//                   pole), >= 1; 1 is uniform; beyond about 10 the pole block is slender
+//                   unless CoreOffset is about 0.3                                        (3)
 //   SurfaceGrading  innermost / outermost element layer along each radial line, >= 1      (1.5)
+//   CoreOffset      shift of the core toward the contact pole, as a fraction of R,
+//                   0 <= CoreOffset <= 0.5; 0 centres it on the sphere's centre           (0)
 //
 // Physical groups (read by dyncontact as material and boundary ids, see gmsh_mesh.h):
 //   Physical Surface 1      the body
@@ -38,7 +48,8 @@ DefineConstant[
   RadialDivisions = {6,   Name "Parameters/RadialDivisions"},
   Refinement      = {0,   Name "Parameters/Refinement"},
   PoleGrading     = {3,   Name "Parameters/PoleGrading"},
-  SurfaceGrading  = {1.5, Name "Parameters/SurfaceGrading"}
+  SurfaceGrading  = {1.5, Name "Parameters/SurfaceGrading"},
+  CoreOffset      = {0,   Name "Parameters/CoreOffset"}
 ];
 
 If (R <= 0)
@@ -58,6 +69,9 @@ If (PoleGrading < 1)
 EndIf
 If (SurfaceGrading < 1)
   Error("sphere.geo: SurfaceGrading = %g, but it must be >= 1", SurfaceGrading);
+EndIf
+If (CoreOffset < 0 || CoreOffset > 0.5)
+  Error("sphere.geo: CoreOffset = %g, but it must be in [0, 0.5]", CoreOffset);
 EndIf
 
 // Element edges on the surface arc of the pole block (and of the far block; twice as many on the
@@ -83,11 +97,16 @@ Else
   far_corner_angle  = 3 * Pi / 4;
 EndIf
 
-// The core corners: where the rays from the centre to the surface corners leave the square
-// [0, a] x [-a, a] (local coordinates r and t, see the macro).
-core_size        = 0.45 * R;
-pole_core_radius = core_size / Max(Sin(pole_corner_angle), Fabs(Cos(pole_corner_angle)));
-far_core_radius  = core_size / Max(Sin(far_corner_angle), Fabs(Cos(far_corner_angle)));
+// The core corners: where the rays from the core's centre (0, core_offset) to the surface corners
+// leave the square [0, a] x [core_offset - a, core_offset + a] (local coordinates r and t, see
+// the macro). A ray is (0, core_offset) + c (Sin(angle), Cos(angle) - CoreOffset), c >= 0, and
+// c at the corner is its core_fraction (CoreOffset = 0: the corner's distance from the centre).
+core_size          = 0.45 * R;
+core_offset        = CoreOffset * R;
+pole_core_fraction =
+  core_size / Max(Sin(pole_corner_angle), Fabs(Cos(pole_corner_angle) - CoreOffset));
+far_core_fraction  =
+  core_size / Max(Sin(far_corner_angle), Fabs(Cos(far_corner_angle) - CoreOffset));
 
 // One sphere: the centre (0, sphere_centre_z), contact pole at sphere_centre_z + sphere_pole_side
 // R, physical surface sphere_body and physical curve 1 + sphere_body for its surface; its axis
@@ -100,15 +119,15 @@ Macro SphereBody
   centre = newp; Point(centre) = {0, zc, 0};
 
   core_axis_pole   = newp;
-  Point(core_axis_pole) = {0, zc + s * core_size, 0};
+  Point(core_axis_pole) = {0, zc + s * (core_offset + core_size), 0};
   core_corner_pole = newp;
-  Point(core_corner_pole) = {pole_core_radius * Sin(pole_corner_angle),
-                             zc + s * pole_core_radius * Cos(pole_corner_angle), 0};
+  Point(core_corner_pole) = {pole_core_fraction * Sin(pole_corner_angle),
+    zc + s * (core_offset + pole_core_fraction * (Cos(pole_corner_angle) - CoreOffset)), 0};
   core_corner_far  = newp;
-  Point(core_corner_far) = {far_core_radius * Sin(far_corner_angle),
-                            zc + s * far_core_radius * Cos(far_corner_angle), 0};
+  Point(core_corner_far) = {far_core_fraction * Sin(far_corner_angle),
+    zc + s * (core_offset + far_core_fraction * (Cos(far_corner_angle) - CoreOffset)), 0};
   core_axis_far    = newp;
-  Point(core_axis_far) = {0, zc - s * core_size, 0};
+  Point(core_axis_far) = {0, zc + s * (core_offset - core_size), 0};
 
   surface_pole        = newp;
   Point(surface_pole) = {0, zc + s * R, 0};

@@ -8,8 +8,14 @@
 //
 // Parameters, settable from outside (gmsh -setnumber NAME VALUE, or dyncontact's read_gmsh_mesh):
 //   CentreDistance  distance of the two centres [length], > 2 R (the spheres must not overlap) (20)
-//   and R, Divisions, RadialDivisions, Refinement, PoleGrading, SurfaceGrading as in sphere.geo
-//   (CentreZ and PoleSide are set here and are not parameters of this file).
+//   and R, Divisions, RadialDivisions, Refinement, PoleGrading, SurfaceGrading, CoreOffset as in
+//   sphere.geo (CentreZ and PoleSide are set here and are not parameters of this file).
+//
+// The graded family for the Hertz impact (see sphere.geo; cells for both bodies, smallest surface
+// edge at the contact poles):
+//   coarse  Refinement 0, PoleGrading 10, CoreOffset 0.3     432 cells, edge 0.26
+//   medium  Refinement 1, PoleGrading 10, CoreOffset 0.3    1728 cells, edge 0.13
+//   fine    Refinement 2, PoleGrading 10, CoreOffset 0.3    6912 cells, edge 0.067
 //
 // Physical groups:
 //   Physical Surface 1, 2   body 1, body 2

@@ -1,6 +1,8 @@
 #include <dyncontact/contact_constraints.h>
+#include <dyncontact/node_to_node_contact.h>
 
 #include <algorithm>
+#include <cmath>
 
 namespace dyncontact
 {
@@ -10,6 +12,25 @@ ContactConstraints<dim>::ContactConstraints(std::vector<ContactPair<dim>> pairs,
     : pairs(std::move(pairs)), formulation(formulation), active(this->pairs.size(), false),
       multiplier_values(this->pairs.size())
 {
+}
+
+template <int dim>
+ContactConstraints<dim>::ContactConstraints(const NodeToNodeContact<dim>& surfaces,
+                                            const ContactFormulation formulation)
+    : ContactConstraints(surfaces.pairs(), formulation)
+{
+  this->surfaces = &surfaces;
+}
+
+template <int dim>
+void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement)
+{
+  if (surfaces == nullptr)
+    return;
+  auto geometry = surfaces->current_geometry(displacement);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    pairs[k].normal = geometry.normals[k];
+  contact_areas = std::move(geometry.areas);
 }
 
 template <int dim>
@@ -27,6 +48,20 @@ double ContactConstraints<dim>::normal_component(const Node<dim>& node,
   for (unsigned int d = 0; d < dim; ++d)
     component += normal[d] * field[node.dofs[d]];
   return component;
+}
+
+template <int dim>
+double ContactConstraints<dim>::normal_balance(const Node<dim>& node,
+                                               const Tensor<1, dim>& normal,
+                                               const Vector<double>& lumped_mass,
+                                               const Vector<double>& acceleration,
+                                               const Vector<double>& net_internal_force) const
+{
+  double balance = 0.;
+  for (unsigned int d = 0; d < dim; ++d)
+    balance += normal[d] * (lumped_mass[node.dofs[d]] * acceleration[node.dofs[d]] +
+                            net_internal_force[node.dofs[d]]);
+  return balance;
 }
 
 template <int dim>
@@ -220,13 +255,68 @@ ContactConstraints<dim>::recovered_contact_force(const Vector<double>& lumped_ma
   double force = 0.;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (active[k])
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        const types::global_dof_index dof = pairs[k].node_a.dofs[d];
-        force -=
-            pairs[k].normal[d] * (lumped_mass[dof] * acceleration[dof] + net_internal_force[dof]);
-      }
+      force -= normal_balance(
+          pairs[k].node_a, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
   return force;
+}
+
+template <int dim>
+typename ContactConstraints<dim>::SideForces
+ContactConstraints<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
+                                               const Vector<double>& acceleration,
+                                               const Vector<double>& net_internal_force) const
+{
+  SideForces forces{0., 0.};
+  for (const bool side_b : {false, true})
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      if (active[k] && !pairs[k].against_wall())
+      {
+        const double balance = normal_balance(side_b ? *pairs[k].node_b : pairs[k].node_a,
+                                              pairs[k].normal,
+                                              lumped_mass,
+                                              acceleration,
+                                              net_internal_force);
+        (side_b ? forces.on_b : forces.on_a) += side_b ? balance : -balance;
+      }
+  return forces;
+}
+
+template <int dim>
+double ContactConstraints<dim>::max_penetration(const Vector<double>& displacement) const
+{
+  double penetration = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    penetration = std::max(penetration, -gap(k, displacement));
+  return penetration;
+}
+
+template <int dim>
+double ContactConstraints<dim>::contact_radius(const Vector<double>& displacement) const
+{
+  double radius = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+    {
+      // Distance from the axis along the last coordinate: the components before it.
+      double distance_squared = 0.;
+      for (unsigned int d = 0; d + 1 < dim; ++d)
+      {
+        const double x = pairs[k].node_a.position[d] + displacement[pairs[k].node_a.dofs[d]];
+        distance_squared += x * x;
+      }
+      radius = std::max(radius, std::sqrt(distance_squared));
+    }
+  return radius;
+}
+
+template <int dim>
+std::vector<double> ContactConstraints<dim>::contact_pressures() const
+{
+  std::vector<double> pressures(contact_areas.size(), 0.);
+  for (unsigned int k = 0; k < contact_areas.size(); ++k)
+    if (active[k])
+      pressures[k] = multiplier_values[k] / contact_areas[k];
+  return pressures;
 }
 
 template <int dim>

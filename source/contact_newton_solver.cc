@@ -123,6 +123,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       residual(n_dofs + n_pairs), constraint_residual(n_pairs), multiplier_increment(n_pairs);
   displacement = predictor;
   displacement += increment;
+  contact.update_geometry(displacement);
 
   // A pair enters when the unconstrained predicted gap is negative.
   bool active_set_changed = contact.update_active_set(displacement, gap_tolerance, 0.);
@@ -147,6 +148,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       increment[i] += length * newton_update[i];
     displacement = predictor;
     displacement += increment;
+    contact.update_geometry(displacement);
     contact.restore(before_update->contact);
     for (unsigned int k = 0; k < n_pairs; ++k)
       multiplier_increment[k] = length * newton_update[n_dofs + k];
@@ -154,37 +156,51 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
   };
 
   bool started_from_safe_increment = false;
+  // The first evaluation of a step (the predictor, which often is the answer, e.g. in free flight)
+  // skips the tangent if an earlier step has supplied the tangent's diagonal for the force scale.
+  bool with_tangent = largest_tangent_diagonal == 0.;
   for (unsigned int linear_solves = 0;;)
   {
     std::string evaluation_failure;
     double residual_norm = 0., force_scale = 0., constraint_violation = 0.;
     try
     {
-      matrix = 0.;
-      bodies.assemble_internal_force(
-          displacement, internal_force_values, &matrix, &strain_energy_value);
+      if (with_tangent)
+        matrix = 0.;
+      bodies.assemble_internal_force(displacement,
+                                     internal_force_values,
+                                     with_tangent ? &matrix : nullptr,
+                                     &strain_energy_value);
     }
     catch (const SolverFailure& failure)
     {
       evaluation_failure = failure.what();
-      matrix.compress(VectorOperation::add); // flush entries added before the failure
+      if (with_tangent)
+        matrix.compress(VectorOperation::add); // flush entries added before the failure
     }
     if (evaluation_failure.empty())
     {
       for (types::global_dof_index i = 0; i < n_dofs; ++i)
       {
         inertia[i] = inertia_factor * lumped_mass[i] * increment[i];
-        if (dof_handler.locally_owned_dofs().is_element(i))
+        if (with_tangent && dof_handler.locally_owned_dofs().is_element(i))
           matrix.add(i, i, inertia_factor * lumped_mass[i]);
       }
       contact_force = 0.;
       contact.add_contact_forces(contact_force);
       contact.assemble_constraint_rows(displacement,
                                        inactive_diagonal,
-                                       owns_multiplier_rows ? &matrix : nullptr,
+                                       with_tangent && owns_multiplier_rows ? &matrix : nullptr,
                                        constraint_residual);
-      matrix.compress(VectorOperation::add);
-      matrix.clear_rows(locally_owned_fixed_rows, inactive_diagonal);
+      if (with_tangent)
+      {
+        matrix.compress(VectorOperation::add);
+        matrix.clear_rows(locally_owned_fixed_rows, inactive_diagonal);
+        double largest_diagonal = 0.;
+        for (const auto row : dof_handler.locally_owned_dofs())
+          largest_diagonal = std::max(largest_diagonal, std::abs(matrix.diag_element(row)));
+        largest_tangent_diagonal = Utilities::MPI::max(largest_diagonal, communicator);
+      }
 
       double force_residual_squared = 0.;
       for (types::global_dof_index i = 0; i < n_dofs; ++i)
@@ -198,12 +214,8 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
         residual[n_dofs + k] = constraint_residual[k];
       // The force terms, plus the size of the terms that cancel in K u: near a zero crossing of a
       // vibration the force terms vanish but the round-off of evaluating K u does not.
-      double largest_diagonal = 0.;
-      for (const auto row : dof_handler.locally_owned_dofs())
-        largest_diagonal = std::max(largest_diagonal, std::abs(matrix.diag_element(row)));
-      largest_diagonal = Utilities::MPI::max(largest_diagonal, communicator);
       force_scale = inertia.l2_norm() + internal_force_values.l2_norm() + external_force.l2_norm() +
-                    contact_force.l2_norm() + largest_diagonal * displacement.l2_norm();
+                    contact_force.l2_norm() + largest_tangent_diagonal * displacement.l2_norm();
       residual_norm = std::sqrt(force_residual_squared);
       for (unsigned int k = 0; k < n_pairs; ++k)
         if (contact.is_active(k))
@@ -212,7 +224,13 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       if (!active_set_changed && residual_norm <= parameters.residual_tolerance * force_scale &&
           constraint_violation <= gap_tolerance)
         return {linear_solves, residual_norm};
+      if (!with_tangent)
+      {
+        with_tangent = true; // evaluate the same point again, now with the tangent
+        continue;
+      }
     }
+    with_tangent = true;
 
     const bool step_failed =
         !evaluation_failure.empty() || !std::isfinite(residual_norm) ||
@@ -223,6 +241,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       increment                   = safe_increment;
       displacement                = predictor;
       displacement += increment;
+      contact.update_geometry(displacement);
       active_set_changed = contact.update_active_set(displacement, gap_tolerance, 0.);
       continue;
     }

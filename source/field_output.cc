@@ -3,8 +3,11 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/numerics/data_out.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <sstream>
 
 namespace dyncontact
@@ -22,7 +25,8 @@ void FieldOutput<dim>::write_fields(const unsigned int step,
                                     const double time,
                                     const Vector<double>& displacement,
                                     const Vector<double>& velocity,
-                                    const Vector<double>& acceleration)
+                                    const Vector<double>& acceleration,
+                                    const Vector<double>* contact_traction)
 {
   const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
       dim, DataComponentInterpretation::component_is_part_of_vector);
@@ -40,6 +44,11 @@ void FieldOutput<dim>::write_fields(const unsigned int step,
                            std::vector<std::string>(dim, "acceleration"),
                            DataOut<dim>::type_dof_data,
                            vector_field);
+  if (contact_traction != nullptr)
+    data_out.add_data_vector(*contact_traction,
+                             std::vector<std::string>(dim, "contact_traction"),
+                             DataOut<dim>::type_dof_data,
+                             vector_field);
   Vector<float> body(dof_handler.get_triangulation().n_active_cells());
   for (const auto& cell : dof_handler.active_cell_iterators())
     body[cell->active_cell_index()] = cell->material_id() + 1;
@@ -83,6 +92,63 @@ void FieldOutput<dim>::write_profile(const double time,
     for (const Vector<double>* field : {&displacement, &velocity, &acceleration})
       for (unsigned int d = 0; d < dim; ++d)
         file << "," << (*field)[node.dofs[d]];
+    file << '\n';
+  }
+}
+
+template <int dim>
+void FieldOutput<dim>::write_contact_pressure(const double time,
+                                              const std::vector<PressureSample>& samples) const
+{
+  std::ostringstream name;
+  name << directory << "/contact_pressure_t" << time << ".csv";
+  std::ofstream file(name.str());
+  const std::string axes = "xyz";
+  for (unsigned int d = 0; d < dim; ++d)
+    file << axes[d] << ",";
+  file << "gap,pressure,active\n" << std::setprecision(15);
+  for (const auto& sample : samples)
+  {
+    for (unsigned int d = 0; d < dim; ++d)
+      file << sample.position[d] << ",";
+    file << sample.gap << "," << sample.pressure << "," << (sample.active ? 1 : 0) << '\n';
+  }
+}
+
+template <int dim>
+void FieldOutput<dim>::write_cell_outlines(const std::vector<Node<dim>>& nodes) const
+{
+  AssertThrow(dim == 2, ExcNotImplemented());
+  std::map<types::global_dof_index, unsigned int> row_of_first_dof;
+  for (unsigned int row = 0; row < nodes.size(); ++row)
+    row_of_first_dof.emplace(nodes[row].dofs[0], row);
+
+  // The boundary support points of the reference cell, counter-clockwise around its centre.
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  Point<dim> centre;
+  for (unsigned int d = 0; d < dim; ++d)
+    centre[d] = 0.5;
+  std::vector<std::pair<double, unsigned int>> outline; // (angle, local DoF of component 0)
+  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+  {
+    const Tensor<1, dim> offset = fe.unit_support_point(i) - centre;
+    if (fe.system_to_component_index(i).first == 0 && offset.norm() > 1e-12)
+      outline.emplace_back(std::atan2(offset[dim - 1], offset[0]), i);
+  }
+  std::sort(outline.begin(), outline.end());
+
+  std::ofstream file(directory + "/cells.csv");
+  file << "body";
+  for (unsigned int point = 0; point < outline.size(); ++point)
+    file << ",node_" << point;
+  file << '\n';
+  std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+  for (const auto& cell : dof_handler.active_cell_iterators())
+  {
+    cell->get_dof_indices(cell_dofs);
+    file << cell->material_id() + 1;
+    for (const auto& point : outline)
+      file << "," << row_of_first_dof.at(cell_dofs[point.second]);
     file << '\n';
   }
 }

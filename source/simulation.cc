@@ -2,6 +2,7 @@
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
@@ -32,7 +33,11 @@ std::vector<std::string> Simulation<dim>::history_columns() const
                                       "kinetic_energy",
                                       "strain_energy",
                                       "total_energy",
-                                      "algorithmic_energy"};
+                                      "algorithmic_energy",
+                                      "max_penetration",
+                                      "force_imbalance"};
+  if (dim > 1)
+    columns.push_back("contact_radius");
   for (unsigned int b = 1; b <= model->n_bodies(); ++b)
     for (const std::string quantity : {"momentum_", "u_tip_", "v_tip_", "a_tip_"})
       columns.push_back(quantity + std::to_string(b));
@@ -43,6 +48,7 @@ template <int dim>
 void Simulation<dim>::setup()
 {
   model->create_triangulation(triangulation);
+  mapping.initialize(MappingQ<dim>(model->element_degree()), triangulation);
   dof_handler.reinit(triangulation);
   dof_handler.distribute_dofs(fe);
   nodes      = std::make_unique<NodeIndex<dim>>(dof_handler, mapping);
@@ -53,8 +59,13 @@ void Simulation<dim>::setup()
   fixed_dofs = model->fixed_dofs(*nodes);
   loads      = std::make_unique<SurfaceTractions<dim>>(
       dof_handler, mapping, *kinematics, model->surface_tractions());
-  contact = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
-                                                      parameters.contact.formulation);
+  surface_contact = model->create_surface_contact(dof_handler, *kinematics, *nodes);
+  if (surface_contact)
+    contact =
+        std::make_unique<ContactConstraints<dim>>(*surface_contact, parameters.contact.formulation);
+  else
+    contact = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
+                                                        parameters.contact.formulation);
   solver =
       std::make_unique<ContactNewtonSolver<dim>>(dof_handler,
                                                  *bodies,
@@ -146,6 +157,7 @@ void Simulation<dim>::set_initial_conditions()
     acceleration[i] = (external_force[i] - internal_force[i]) / mass[i];
   for (const auto dof : fixed_dofs)
     velocity[dof] = acceleration[dof] = 0.;
+  contact->update_geometry(displacement);
 }
 
 template <int dim>
@@ -182,6 +194,40 @@ Vector<double> Simulation<dim>::net_internal_force() const
 }
 
 template <int dim>
+Vector<double> Simulation<dim>::contact_traction() const
+{
+  Vector<double> traction(dof_handler.n_dofs());
+  const std::vector<double> pressures = contact->contact_pressures();
+  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
+  {
+    const ContactPair<dim>& pair = contact->candidate_pairs()[k];
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      traction[pair.node_a.dofs[d]]  = -pressures[k] * pair.normal[d];
+      traction[pair.node_b->dofs[d]] = pressures[k] * pair.normal[d];
+    }
+  }
+  return traction;
+}
+
+template <int dim>
+void Simulation<dim>::write_contact_pressure() const
+{
+  const std::vector<double> pressures = contact->contact_pressures();
+  std::vector<typename FieldOutput<dim>::PressureSample> samples;
+  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
+  {
+    const Node<dim>& node = contact->candidate_pairs()[k].node_a;
+    Point<dim> position   = node.position;
+    for (unsigned int d = 0; d < dim; ++d)
+      position[d] += displacement[node.dofs[d]];
+    samples.push_back(
+        {position, contact->gap(k, displacement), pressures[k], contact->is_active(k)});
+  }
+  field_output->write_contact_pressure(time, samples);
+}
+
+template <int dim>
 void Simulation<dim>::record_step(const unsigned int step, const unsigned int linear_solves)
 {
   double kinetic = 0., acceleration_energy = 0.;
@@ -191,19 +237,29 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
     acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
   }
   // After a step the solver's last evaluation was at this displacement: reuse its pass.
-  const double strain = step == 0 ? bodies->strain_energy(displacement) : solver->strain_energy();
-  const double contact_force =
-      step == 0 ? 0. : contact->recovered_contact_force(mass, acceleration, net_internal_force());
+  const double strain  = step == 0 ? bodies->strain_energy(displacement) : solver->strain_energy();
+  double contact_force = 0., force_imbalance = 0.;
+  if (step > 0)
+  {
+    const Vector<double> net_force = net_internal_force();
+    contact_force          = contact->recovered_contact_force(mass, acceleration, net_force);
+    const auto side_forces = contact->recovered_side_forces(mass, acceleration, net_force);
+    force_imbalance        = side_forces.on_a - side_forces.on_b;
+  }
 
-  std::vector<double> row        = {time,
-                                    contact_force,
-                                    contact->total_multiplier(),
-                                    static_cast<double>(contact->n_active()),
-                                    static_cast<double>(linear_solves),
-                                    kinetic,
-                                    strain,
-                                    kinetic + strain,
-                                    newmark.algorithmic_energy(kinetic, strain, acceleration_energy)};
+  std::vector<double> row = {time,
+                             contact_force,
+                             contact->total_multiplier(),
+                             static_cast<double>(contact->n_active()),
+                             static_cast<double>(linear_solves),
+                             kinetic,
+                             strain,
+                             kinetic + strain,
+                             newmark.algorithmic_energy(kinetic, strain, acceleration_energy),
+                             contact->max_penetration(displacement),
+                             force_imbalance};
+  if (dim > 1)
+    row.push_back(contact->contact_radius(displacement));
   const Tensor<1, dim> direction = model->impact_direction();
   std::vector<double> momentum(monitors.size(), 0.);
   for (const auto& node : nodes->nodes())
@@ -223,9 +279,17 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
   step_history.add_row(row);
 
   if (parameters.output.vtu_interval > 0 && step % parameters.output.vtu_interval == 0)
-    field_output->write_fields(step, time, displacement, velocity, acceleration);
+  {
+    const Vector<double> traction = surface_contact ? contact_traction() : Vector<double>();
+    field_output->write_fields(
+        step, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
+  }
   if (profile_steps.count(step) > 0 && is_root_rank)
+  {
     field_output->write_profile(time, nodes->nodes(), displacement, velocity, acceleration);
+    if (surface_contact)
+      write_contact_pressure();
+  }
 }
 
 template <int dim>
@@ -235,6 +299,8 @@ void Simulation<dim>::run()
   set_initial_conditions();
   const std::string& directory = parameters.output.directory;
   field_output = std::make_unique<FieldOutput<dim>>(dof_handler, mapping, directory);
+  if (dim == 2 && is_root_rank)
+    field_output->write_cell_outlines(nodes->nodes());
   if (is_root_rank)
     step_history.attach_file(directory + "/history.csv");
   if (parameters.output.write_exact_solution && is_root_rank)

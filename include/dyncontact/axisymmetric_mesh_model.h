@@ -11,13 +11,14 @@ namespace dyncontact
  * quadrilaterals with a quadratic mapping and the mesh's spherical manifolds: the paper's spheres.
  * Each body has its own hyperelastic law, density, initial velocity (a parsed function of r, z) and
  * monitor node; u_r is held at zero on the symmetry axis. Momentum and tip motion are reported
- * along z. It has no contact candidates yet (sphere contact is the next step) and no reference
- * solution of its own: the free-vibration and Hertz references are used by the tests.
+ * along z. Two bodies touch through node-to-node contact of their facing surfaces.
  */
 class AxisymmetricMeshModel : public ProblemModel<2>
 {
 public:
-  AxisymmetricMeshModel(const MeshParameters& mesh, const BodiesParameters& bodies);
+  AxisymmetricMeshModel(const MeshParameters& mesh,
+                        const BodiesParameters& bodies,
+                        const ContactParameters& contact);
 
   unsigned int element_degree() const override { return 2; }
   unsigned int n_bodies() const override { return bodies.bodies.size(); }
@@ -29,7 +30,19 @@ public:
   std::vector<BodyMaterial> body_materials() const override;
   std::unique_ptr<Kinematics<2>> create_kinematics() const override;
   Tensor<1, 2> initial_velocity(types::material_id body, const Point<2>& X) const override;
+  /** None: the contact of two bodies has current normals, see create_surface_contact(). */
   std::vector<ContactPair<2>> contact_pairs(const NodeIndex<2>& nodes) const override;
+  /**
+   * With two bodies: node-to-node contact between their sphere surfaces (boundary ids
+   * SphereMeshIds::surface(0) and (1)), which must have matching facing nodes; the penalty
+   * stiffness of a pair is Contact/penalty factor times E / h_min times its contact area (E of the
+   * stiffer body, h_min the shortest cell edge). With one body: null. More than two bodies are
+   * rejected (InputError).
+   */
+  std::unique_ptr<NodeToNodeContact<2>>
+  create_surface_contact(const DoFHandler<2>& dof_handler,
+                         const Kinematics<2>& kinematics,
+                         const NodeIndex<2>& nodes) const override;
   std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
   std::vector<Node<2>> monitor_nodes(const NodeIndex<2>& nodes) const override;
   /** Body b's `Surface traction` on its surface (boundary id SphereMeshIds::surface(b)). */
@@ -43,6 +56,7 @@ private:
 
   MeshParameters mesh;
   BodiesParameters bodies;
+  ContactParameters contact;
   std::vector<SphereGeometry> spheres;
   unsigned int n_cells;
   double shortest_edge;

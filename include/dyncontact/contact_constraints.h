@@ -1,5 +1,6 @@
 #pragma once
 
+#include <dyncontact/contact_pair.h>
 #include <dyncontact/global.h>
 #include <dyncontact/newmark.h>
 #include <dyncontact/node_index.h>
@@ -14,29 +15,8 @@
 
 namespace dyncontact
 {
-/**
- * One candidate contact constraint: a node of body A against a node of body B (node-to-node) or
- * against a fixed rigid wall. The gap is g = n . (x_B - x_A) with current positions x = X + u and
- * the unit normal n from A toward B, which is fixed (exact for the bars; small-sliding
- * approximation otherwise). Compression is a positive multiplier.
- */
 template <int dim>
-struct ContactPair
-{
-  Node<dim> node_a;
-  std::optional<Node<dim>> node_b; ///< empty: a rigid wall through `wall_point`
-  Point<dim> wall_point;
-  Tensor<1, dim> normal;
-  double penalty_stiffness; ///< used by the penalty formulation only
-
-  bool against_wall() const { return !node_b.has_value(); }
-
-  /** n . (X_B - X_A), or n . (wall point - X_A): the gap at zero displacement. */
-  double reference_gap() const
-  {
-    return normal * ((against_wall() ? wall_point : node_b->position) - node_a.position);
-  }
-};
+class NodeToNodeContact;
 
 /**
  * The contact layer: the candidate pairs, their active set and multipliers, their rows in the
@@ -49,13 +29,27 @@ struct ContactPair
  * diagonal (lambda = -eps g, i.e. the classical penalty force eps <-g>). Active set: a pair enters
  * when it penetrates and leaves when its multiplier turns tensile (Hughes et al. 1976).
  *
+ * Normals are fixed unless the pairs come from a NodeToNodeContact: then update_geometry() moves
+ * them to the current configuration (call it whenever the displacement changes) and records the
+ * pairs' contact areas, from which the contact pressure follows.
+ *
  * It does not choose time steps, assemble elasticity or solve linear systems.
  */
 template <int dim>
 class ContactConstraints
 {
 public:
+  /** Pairs with fixed normals (bars, a rigid wall). */
   ContactConstraints(std::vector<ContactPair<dim>> pairs, ContactFormulation formulation);
+
+  /** The pairs of `surfaces`, whose normals follow the current configuration. */
+  ContactConstraints(const NodeToNodeContact<dim>& surfaces, ContactFormulation formulation);
+
+  /**
+   * For pairs of a NodeToNodeContact: sets every normal and contact area to those at
+   * `displacement`. Does nothing for fixed normals.
+   */
+  void update_geometry(const Vector<double>& displacement);
 
   unsigned int n_pairs() const { return pairs.size(); }
   const std::vector<ContactPair<dim>>& candidate_pairs() const { return pairs; }
@@ -131,8 +125,40 @@ public:
                                  const Vector<double>& acceleration,
                                  const Vector<double>& net_internal_force) const;
 
+  /**
+   * The interface force of the active node-to-node pairs (wall pairs left out) recovered as in
+   * recovered_contact_force() on each side: `on_a` from the body-A nodes (compression positive),
+   * `on_b` from the body-B nodes (the force A exerts on B along n). Equal up to round-off, also
+   * after the modified scheme's correction, whose normal rate changes on the two sides of a pair
+   * are equal and opposite; their difference measures the force balance.
+   */
+  struct SideForces
+  {
+    double on_a;
+    double on_b;
+  };
+  SideForces recovered_side_forces(const Vector<double>& lumped_mass,
+                                   const Vector<double>& acceleration,
+                                   const Vector<double>& net_internal_force) const;
+
   /** Sum of the multipliers of the active pairs. */
   double total_multiplier() const;
+
+  /** The largest penetration max(0, -g) over all candidate pairs at `displacement`. */
+  double max_penetration(const Vector<double>& displacement) const;
+
+  /**
+   * The largest distance of the current position of node A from the axis of the last coordinate
+   * (r in axisymmetry, where it is the contact radius) over the active pairs; zero if none is
+   * active. Meaningless in 1D, where it is zero.
+   */
+  double contact_radius(const Vector<double>& displacement) const;
+
+  /**
+   * Contact pressure lambda_k / area_k of every pair (zero if inactive), with the areas of the last
+   * update_geometry(); empty for pairs with fixed normals.
+   */
+  std::vector<double> contact_pressures() const;
 
 private:
   /** Normal component n . f of a nodal vector field at `node`. */
@@ -140,7 +166,19 @@ private:
                           const Tensor<1, dim>& normal,
                           const Vector<double>& field) const;
 
+  /**
+   * n . (M a + Q(u) - W) at `node`: the equation-of-motion balance along n, i.e. minus the contact
+   * force on a body-A node and plus that on a body-B node.
+   */
+  double normal_balance(const Node<dim>& node,
+                        const Tensor<1, dim>& normal,
+                        const Vector<double>& lumped_mass,
+                        const Vector<double>& acceleration,
+                        const Vector<double>& net_internal_force) const;
+
   std::vector<ContactPair<dim>> pairs;
+  const NodeToNodeContact<dim>* surfaces = nullptr; ///< null: fixed normals
+  std::vector<double> contact_areas;                ///< per pair, with `surfaces` only
   ContactFormulation formulation;
   std::vector<bool> active;
   Vector<double> multiplier_values;

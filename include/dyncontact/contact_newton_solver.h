@@ -24,9 +24,11 @@ namespace dyncontact
  * Newton); the step has converged when the residual is below the tolerance times the size of the
  * force terms (inertia, internal, contact, and max diag(K_eff) |u|, the round-off scale of K u),
  * the active constraints hold to the gap tolerance, and the last update left the active set
- * unchanged. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment. A backtracking
- * line search halves an update (up to 10 times) when the residual at its end cannot be evaluated
- * (an inverted element) or grows while the active set stays the same.
+ * unchanged. The first residual of a step is evaluated without the tangent (using the diagonal of
+ * the last tangent for the force scale), which halves the cost of steps the predictor already
+ * solves, such as free flight. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
+ * A backtracking line search halves an update (up to 10 times) when the residual at its end cannot
+ * be evaluated (an inverted element) or grows while the active set stays the same.
  *
  * Parallel layout: rows of the matrix are distributed like the DoFs, the multiplier rows belong to
  * the last rank; the direct solver is Amesos KLU on one rank and Amesos MUMPS on several. Vectors
@@ -95,6 +97,8 @@ private:
   IndexSet locally_owned_rows;
   TrilinosWrappers::SparseMatrix matrix;
   Vector<double> internal_force_values;
-  double strain_energy_value = 0.;
+  /** max diag(K_eff) at the last tangent assembly (0: none yet), for the force scale. */
+  double largest_tangent_diagonal = 0.;
+  double strain_energy_value      = 0.;
 };
 } // namespace dyncontact

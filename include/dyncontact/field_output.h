@@ -3,6 +3,7 @@
 #include <dyncontact/global.h>
 #include <dyncontact/node_index.h>
 
+#include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
@@ -27,12 +28,39 @@ public:
               const Mapping<dim>& mapping,
               std::string directory);
 
-  /** Writes `solution_<step>.<rank>.vtu` and `solution_<step>.pvtu`, and updates `solution.pvd`. */
+  /**
+   * Writes `solution_<step>.<rank>.vtu` and `solution_<step>.pvtu`, and updates `solution.pvd`.
+   * `contact_traction` (a nodal vector field, the traction the other body exerts; its magnitude is
+   * the contact pressure) is written if not null.
+   */
   void write_fields(unsigned int step,
                     double time,
                     const Vector<double>& displacement,
                     const Vector<double>& velocity,
-                    const Vector<double>& acceleration);
+                    const Vector<double>& acceleration,
+                    const Vector<double>* contact_traction);
+
+  /** One contact pair at one time, as written by write_contact_pressure(). */
+  struct PressureSample
+  {
+    Point<dim> position; ///< current position of the pair's node on body A
+    double gap;
+    double pressure; ///< multiplier / contact area, zero if inactive
+    bool active;
+  };
+
+  /**
+   * Writes `contact_pressure_t<time>.csv`: per candidate pair the current coordinates of its
+   * body-A node, the gap, the contact pressure and whether it is active.
+   */
+  void write_contact_pressure(double time, const std::vector<PressureSample>& samples) const;
+
+  /**
+   * Writes `cells.csv`: per cell its body (1-based) and the rows, in the node order of
+   * write_profile() (0-based), of the support points on its boundary in counter-clockwise order
+   * (8 for a 9-node quadrilateral), so that profiles can be drawn as deformed meshes. 2D only.
+   */
+  void write_cell_outlines(const std::vector<Node<dim>>& nodes) const;
 
   /**
    * Writes `profile_t<time>.csv` with one row per node: body (1-based), reference coordinates,

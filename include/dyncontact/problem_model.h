@@ -5,6 +5,7 @@
 #include <dyncontact/global.h>
 #include <dyncontact/kinematics.h>
 #include <dyncontact/node_index.h>
+#include <dyncontact/node_to_node_contact.h>
 #include <dyncontact/surface_tractions.h>
 
 #include <deal.II/grid/tria.h>
@@ -52,8 +53,18 @@ public:
   /** Velocity at t = 0 of the material point X of `body`. */
   virtual Tensor<1, dim> initial_velocity(types::material_id body, const Point<dim>& X) const = 0;
 
-  /** Candidate contact pairs built from the mesh's nodes. */
+  /** Candidate contact pairs with fixed normals, built from the mesh's nodes. */
   virtual std::vector<ContactPair<dim>> contact_pairs(const NodeIndex<dim>& nodes) const = 0;
+
+  /**
+   * Node-to-node contact between curved surfaces, whose normals follow the deformation, or null
+   * (the default) if the model's contact is given by contact_pairs() alone. A model uses one or the
+   * other, not both.
+   */
+  virtual std::unique_ptr<NodeToNodeContact<dim>>
+  create_surface_contact(const DoFHandler<dim>& dof_handler,
+                         const Kinematics<dim>& kinematics,
+                         const NodeIndex<dim>& nodes) const;
 
   /** DoFs held at zero for all time (e.g. u_r on the symmetry axis). The default: none. */
   virtual std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<dim>& nodes) const;

@@ -16,7 +16,7 @@
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
+#include <deal.II/fe/mapping_q_cache.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
@@ -75,6 +75,10 @@ private:
   void record_step(unsigned int step, unsigned int linear_solves);
   /** Q(u) - W at the last solve: what the contact force balances at a node. */
   Vector<double> net_internal_force() const;
+  /** The nodal traction -p n on body A and p n on body B of every active pair (VTU output). */
+  Vector<double> contact_traction() const;
+  /** Writes the contact pressure profile of the current step (surface contact only). */
+  void write_contact_pressure() const;
   std::vector<std::string> history_columns() const;
 
   const RunParameters parameters;
@@ -84,7 +88,8 @@ private:
   const Newmark newmark;
   parallel::shared::Triangulation<dim> triangulation;
   const FESystem<dim> fe;
-  const MappingQ<dim> mapping;
+  /** The curved-cell mapping, its support points computed once from the manifolds. */
+  MappingQCache<dim> mapping;
   DoFHandler<dim> dof_handler;
   std::unique_ptr<NodeIndex<dim>> nodes;
   std::unique_ptr<Kinematics<dim>> kinematics;
@@ -92,7 +97,8 @@ private:
   Vector<double> mass;
   std::vector<types::global_dof_index> fixed_dofs;
   std::unique_ptr<SurfaceTractions<dim>> loads;
-  Vector<double> external_force; ///< W at the current time
+  Vector<double> external_force;                           ///< W at the current time
+  std::unique_ptr<NodeToNodeContact<dim>> surface_contact; ///< null: fixed-normal pairs only
   std::unique_ptr<ContactConstraints<dim>> contact;
   std::unique_ptr<ContactNewtonSolver<dim>> solver;
   std::vector<Node<dim>> monitors;

@@ -4,6 +4,9 @@
 //    refinement, both in gmsh and by deal.II's refine_global (which needs the manifolds);
 //  - the two-sphere mesh: two bodies of equal volume, body 2 the mirror image of body 1 vertex by
 //    vertex to 1e-12 (contact surfaces included), fitted centres and radii, grading to the poles;
+//  - the graded family for the Hertz impact (PoleGrading 10, CoreOffset 0.3, Refinement 0 and 2):
+//    the edge and the element layer at the contact poles, Q2 nodes in the contact radius, no
+//    slender cells, the facing surfaces mirrored;
 //  - all cells quadrilaterals with a positive Jacobian at every Gauss point of the Q2 mapping;
 //  - bad input: every kind gives one line of InputError naming the file.
 #include <dyncontact/gmsh_mesh.h>
@@ -14,6 +17,7 @@
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/reference_cell.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -288,6 +292,101 @@ TEST(GmshMesh, TwoSpheresAreMirrorImages)
   EXPECT_NEAR(edge_at_far_pole / edge_at_contact_pole, 3, 0.05);
 }
 
+/** Length of the boundary face with id `id` that has a vertex at `point` (0 if there is none). */
+double boundary_edge_at(const Triangulation<2>& triangulation,
+                        const types::boundary_id id,
+                        const Point<2>& point)
+{
+  for (const auto& face : triangulation.active_face_iterators())
+    if (face->at_boundary() && face->boundary_id() == id)
+      for (unsigned int v = 0; v < 2; ++v)
+        if (face->vertex(v).distance(point) < 1e-12)
+          return face->vertex(0).distance(face->vertex(1));
+  return 0;
+}
+
+/** Largest ratio of the mean lengths of a cell's two pairs of opposite edges. */
+double largest_aspect_ratio(const Triangulation<2>& triangulation)
+{
+  double largest = 0;
+  for (const auto& cell : triangulation.active_cell_iterators())
+  {
+    // deal.II's faces 0, 1 are opposite, and so are 2, 3.
+    double length[4];
+    for (unsigned int f = 0; f < 4; ++f)
+      length[f] = cell->face(f)->vertex(0).distance(cell->face(f)->vertex(1));
+    const double ratio = (length[0] + length[1]) / (length[2] + length[3]);
+    largest            = std::max({largest, ratio, 1 / ratio});
+  }
+  return largest;
+}
+
+TEST(GmshMesh, HertzFamilyResolvesTheContactPoles)
+{
+  // The coarse and fine members of the graded family of two_spheres.geo for the Hertz impact
+  // (contact radius 0.47 in the accuracy-critical case): the medium one is Refinement 1.
+  struct Member
+  {
+    double refinement;
+    unsigned int n_cells;
+    double smallest_edge, largest_edge;
+    unsigned int least_q2_nodes_in_contact; // surface nodes of body 1 with r < 0.47, at least
+  };
+  for (const Member& member : {Member{0, 432, 0.2, 0.35, 5}, Member{2, 6912, 0.06, 0.08, 14}})
+  {
+    Triangulation<2> triangulation;
+    const std::vector<SphereGeometry> spheres = read_gmsh_mesh(
+        two_spheres_geo,
+        {{"Refinement", member.refinement}, {"PoleGrading", 10}, {"CoreOffset", 0.3}},
+        triangulation);
+    ASSERT_EQ(spheres.size(), 2u);
+    EXPECT_EQ(triangulation.n_active_cells(), member.n_cells);
+    EXPECT_EQ(count_nonpositive_jacobians(triangulation), 0u);
+
+    // The surface edge and the outermost element layer (on the axis) at both contact poles.
+    const Point<2> pole_1(0, -2), pole_2(0, 2);
+    const double edge_1  = boundary_edge_at(triangulation, SphereMeshIds::surface(0), pole_1);
+    const double edge_2  = boundary_edge_at(triangulation, SphereMeshIds::surface(1), pole_2);
+    const double layer_1 = boundary_edge_at(triangulation, SphereMeshIds::axis, pole_1);
+    const double layer_2 = boundary_edge_at(triangulation, SphereMeshIds::axis, pole_2);
+    const double aspect  = largest_aspect_ratio(triangulation);
+
+    // Q2 nodes of body 1's surface inside the contact radius: vertices and mid-sides, the latter
+    // where the spherical manifold puts them.
+    const std::vector<Point<2>> surface_1 =
+        boundary_vertices(triangulation, SphereMeshIds::surface(0));
+    const std::vector<Point<2>> surface_2 =
+        boundary_vertices(triangulation, SphereMeshIds::surface(1));
+    unsigned int n_contact_nodes = 0;
+    for (const Point<2>& vertex : surface_1)
+      n_contact_nodes += vertex[0] < 0.47;
+    for (const auto& face : triangulation.active_face_iterators())
+      if (face->at_boundary() && face->boundary_id() == SphereMeshIds::surface(0))
+        n_contact_nodes += face->center(/*respect_manifold=*/true)[0] < 0.47;
+
+    std::vector<Point<2>> mirrored_surface_1;
+    for (const Point<2>& vertex : surface_1)
+      mirrored_surface_1.emplace_back(vertex[0], -vertex[1]);
+    const double mismatch = std::max(largest_mismatch(mirrored_surface_1, surface_2),
+                                     largest_mismatch(surface_2, mirrored_surface_1));
+
+    std::cout << "  Refinement " << member.refinement << ": " << triangulation.n_active_cells()
+              << " cells, contact pole edge " << edge_1 << ", layer " << layer_1 << ", "
+              << n_contact_nodes << " Q2 surface nodes at r < 0.47, largest aspect ratio " << aspect
+              << ", facing surfaces mirrored to " << mismatch << std::endl;
+    EXPECT_GT(edge_1, member.smallest_edge);
+    EXPECT_LT(edge_1, member.largest_edge);
+    EXPECT_NEAR(edge_2, edge_1, 1e-12);
+    EXPECT_NEAR(layer_2, layer_1, 1e-12);
+    // The elements at the poles are about square, and none anywhere is slender.
+    EXPECT_LT(std::max(layer_1 / edge_1, edge_1 / layer_1), 1.5);
+    EXPECT_LT(aspect, 3);
+    EXPECT_GE(n_contact_nodes, member.least_q2_nodes_in_contact);
+    ASSERT_EQ(surface_1.size(), surface_2.size());
+    EXPECT_LT(mismatch, 1e-12 * spheres[0].radius);
+  }
+}
+
 TEST(GmshMesh, CellsAreQuadrilateralsWithPositiveJacobians)
 {
   for (const auto& [file, parameters] :
@@ -296,6 +395,7 @@ TEST(GmshMesh, CellsAreQuadrilateralsWithPositiveJacobians)
            {sphere_geo, {{"PoleSide", -1}, {"CentreZ", 3}, {"R", 2}}},
            {sphere_geo, {{"Divisions", 1}, {"RadialDivisions", 1}}},
            {sphere_geo, {{"PoleGrading", 10}, {"SurfaceGrading", 3}}},
+           {sphere_geo, {{"PoleGrading", 20}, {"CoreOffset", 0.5}, {"PoleSide", -1}}},
            {two_spheres_geo, {{"Divisions", 2}, {"RadialDivisions", 2}}}})
   {
     Triangulation<2> triangulation;
@@ -337,6 +437,7 @@ TEST(GmshMesh, BadInputGivesOneLineNamingTheFile)
   expect_input_error(sphere_geo, {{"Refinment", 1}}, "no parameter 'Refinment'");
   expect_input_error(sphere_geo, {{"R", -1}}, "R = -1");
   expect_input_error(sphere_geo, {{"Divisions", 2.5}}, "Divisions = 2.5");
+  expect_input_error(sphere_geo, {{"CoreOffset", 0.6}}, "CoreOffset = 0.6");
   expect_input_error(two_spheres_geo, {{"CentreDistance", 15}}, "overlap");
 
   expect_input_error(directory.write("malformed.geo", "Point(1) = {0, 0, 0};\nLine(2) = {1, 7};\n"),

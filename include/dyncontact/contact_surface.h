@@ -1,0 +1,71 @@
+#pragma once
+
+#include <dyncontact/global.h>
+#include <dyncontact/kinematics.h>
+#include <dyncontact/node_index.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/vector.h>
+
+#include <map>
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * The part of one body's boundary that may touch another body (all faces with one boundary id),
+ * seen as the set of its nodes: the support points of its faces, so vertices and, for Q2 faces,
+ * mid-side nodes. For a displacement u it gives, in the current configuration x = X + u,
+ *  - the outward unit normal at every node: the normals of the faces sharing the node, evaluated
+ *    at the node on the deformed (isoparametric) faces, averaged and normalized;
+ *  - the tributary area of every node: the integral over the deformed faces of the node's face
+ *    shape function times the kinematics' measure factor (2 pi r for axisymmetry), so that a
+ *    uniform pressure p is equivalent to the nodal forces p * area. It is the row sum of the face
+ *    mass matrix and positive for Q1 and Q2 faces (1/6, 2/3, 1/6 of a straight Q2 edge).
+ *
+ * The geometry comes from an isoparametric Euler mapping of the element's own degree, so the faces
+ * are the curves (surfaces) the finite element displacement makes of them. The class holds no
+ * solution data and knows nothing about contact pairs or multipliers. Every MPI rank of a shared
+ * triangulation can evaluate it (it loops over all surface faces, owned or not).
+ */
+template <int dim>
+class ContactSurface
+{
+public:
+  /**
+   * The faces of `dof_handler`'s cells with boundary id `boundary`; `nodes` indexes all nodes of
+   * the mesh. Throws InputError if no face has that id.
+   */
+  ContactSurface(const DoFHandler<dim>& dof_handler,
+                 const Kinematics<dim>& kinematics,
+                 const NodeIndex<dim>& nodes,
+                 types::boundary_id boundary);
+
+  /** The surface nodes, ordered as in NodeIndex (by body, then position). */
+  const std::vector<Node<dim>>& nodes() const { return surface_nodes; }
+
+  /** Current outward unit normals and tributary areas, one per node of nodes(). */
+  struct Geometry
+  {
+    std::vector<Tensor<1, dim>> normals;
+    std::vector<double> areas;
+  };
+
+  /** The geometry of the undeformed surface. */
+  Geometry reference_geometry() const;
+
+  /** The geometry at displacement `displacement` (a whole vector in the DoFHandler's numbering). */
+  Geometry current_geometry(const Vector<double>& displacement) const;
+
+private:
+  const DoFHandler<dim>& dof_handler;
+  const Kinematics<dim>& kinematics;
+  const types::boundary_id boundary;
+  std::vector<Node<dim>> surface_nodes;
+  /** Index in surface_nodes of the node with a given first DoF. */
+  std::map<types::global_dof_index, unsigned int> node_of_first_dof;
+  /** (cell, face number) of every surface face. */
+  std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>> faces;
+};
+} // namespace dyncontact

@@ -1,0 +1,70 @@
+#pragma once
+
+#include <dyncontact/contact_pair.h>
+#include <dyncontact/contact_surface.h>
+#include <dyncontact/global.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * Node-to-node contact between two bodies whose facing surfaces have matching nodes, such as the
+ * mirror-image meshes of the paper's two spheres: the candidate pairs and, for a displacement,
+ * their current normals and contact areas.
+ *
+ * Pairing (reference configuration): with e the unit vector from body A's centroid to body B's,
+ * every node of surface A whose outward normal n_A satisfies n_A . e >= 1/2 (it faces B, within
+ * 60 degrees) is paired with the node of surface B that faces A (n_B . e <= -1/2) and lies
+ * across from it: the one nearest in the directions orthogonal to e. The two must coincide in those
+ * directions to `matching_tolerance`; otherwise the meshes do not match and the constructor throws
+ * InputError. Both vertex and mid-side nodes of Q2 faces take part.
+ *
+ * Current normal of a pair: n = (n_A - n_B) / |n_A - n_B| with the current outward nodal normals of
+ * ContactSurface; it points from A toward B and is the common normal of the two surfaces where they
+ * touch (n_B = -n_A there). The 60-degree limit keeps |n_A - n_B| >= 1. The constraint gradient of
+ * a pair is taken with the normal held fixed over a Newton update (the variation of n is not
+ * linearized): that term is proportional to the separation of the two nodes across n, which
+ * vanishes for a closed pair of matching nodes, so Newton keeps its quadratic rate as the pairs
+ * close. Contact area of a pair: the mean of its two nodes' tributary areas (2 pi r weighted in
+ * axisymmetry), which makes lambda / area the contact pressure.
+ *
+ * It is not a general contact search: no sliding beyond the matched partner, no segment
+ * projection, no self contact.
+ */
+template <int dim>
+class NodeToNodeContact
+{
+public:
+  /**
+   * Pairs the facing nodes of `surface_a` (body A) and `surface_b` (body B). A pair's penalty
+   * stiffness is `penalty_stiffness_per_area` times its reference contact area.
+   */
+  NodeToNodeContact(ContactSurface<dim> surface_a,
+                    ContactSurface<dim> surface_b,
+                    double penalty_stiffness_per_area,
+                    double matching_tolerance);
+
+  /** The candidate pairs, with their reference normals. */
+  const std::vector<ContactPair<dim>>& pairs() const { return candidate_pairs; }
+
+  /** Current normal and contact area of every pair, in the order of pairs(). */
+  struct PairGeometry
+  {
+    std::vector<Tensor<1, dim>> normals;
+    std::vector<double> areas;
+  };
+
+  /** The pairs' geometry at `displacement` (a whole vector in the DoFHandler's numbering). */
+  PairGeometry current_geometry(const Vector<double>& displacement) const;
+
+private:
+  ContactSurface<dim> surface_a, surface_b;
+  /** Per pair: index of node_a in surface_a.nodes() and of node_b in surface_b.nodes(). */
+  std::vector<std::pair<unsigned int, unsigned int>> surface_nodes_of_pair;
+  std::vector<ContactPair<dim>> candidate_pairs;
+};
+} // namespace dyncontact
