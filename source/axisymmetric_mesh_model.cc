@@ -1,8 +1,11 @@
 #include <dyncontact/axisymmetric_mesh_model.h>
+#include <dyncontact/impact_measures.h>
 
 #include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
+#include <fstream>
+#include <iomanip>
 #include <limits>
 
 namespace dyncontact
@@ -142,6 +145,84 @@ Tensor<1, 2> AxisymmetricMeshModel::impact_direction() const
   Tensor<1, 2> axial;
   axial[1] = 1.;
   return axial;
+}
+
+std::optional<HertzImpactOfIdenticalSpheres> AxisymmetricMeshModel::hertz_reference() const
+{
+  if (n_bodies() != 2 || spheres.size() != 2)
+    return std::nullopt;
+  const BodyParameters &lower = bodies.bodies[0], &upper = bodies.bodies[1];
+  const double radius = spheres[0].radius;
+  // Same radius and constants up to round-off of the mesh fit and of the parameter file.
+  const auto same = [](const double a, const double b)
+  { return std::abs(a - b) <= 1e-6 * std::max(std::abs(a), std::abs(b)); };
+  if (!same(radius, spheres[1].radius) || !same(lower.youngs_modulus, upper.youngs_modulus) ||
+      !same(lower.poissons_ratio, upper.poissons_ratio) || !same(lower.density, upper.density))
+    return std::nullopt;
+  const double distance = spheres[1].centre[1] - spheres[0].centre[1];
+  const double approach_speed =
+      (distance > 0. ? 1. : -1.) * (lower.initial_velocity->value(spheres[0].centre, 1) -
+                                    upper.initial_velocity->value(spheres[1].centre, 1));
+  if (approach_speed <= 0. || std::abs(distance) <= 2. * radius)
+    return std::nullopt;
+  return HertzImpactOfIdenticalSpheres(
+      ElasticSphere{radius, lower.youngs_modulus, lower.poissons_ratio, lower.density},
+      approach_speed,
+      (std::abs(distance) - 2. * radius) / approach_speed);
+}
+
+void AxisymmetricMeshModel::write_reference(const std::string& directory,
+                                            const std::vector<double>& times,
+                                            const std::vector<Node<2>>&) const
+{
+  const auto hertz = hertz_reference();
+  if (!hertz)
+    return;
+  std::ofstream file(directory + "/hertz.csv");
+  file << "# Hertz's quasi-static impact of identical spheres: R* = " << hertz->effective_radius()
+       << ", E* = " << hertz->effective_modulus() << ", m* = " << hertz->effective_mass()
+       << ", v = " << hertz->relative_approach_speed()
+       << ", first touch t0 = " << hertz->first_touch_time() << "; peak force "
+       << hertz->maximum_force() << ", duration " << hertz->contact_duration() << ", impulse "
+       << hertz->impulse() << "\n";
+  file << "time,contact_force,approach\n" << std::setprecision(15);
+  for (const double time : times)
+    file << time << "," << hertz->contact_force(time) << "," << hertz->approach(time) << "\n";
+}
+
+void AxisymmetricMeshModel::summarize_run(const std::string& directory,
+                                          const History& history,
+                                          std::ostream& log) const
+{
+  const auto hertz = hertz_reference();
+  if (!hertz)
+    return;
+  const ImpactMeasures fe = measure_impact(history.column("time"), history.column("contact_force"));
+  struct Row
+  {
+    std::string quantity;
+    double computed, reference;
+  };
+  const std::vector<Row> rows = {
+      {"peak_force", fe.peak_force, hertz->maximum_force()},
+      {"peak_time", fe.peak_time, hertz->first_touch_time() + 0.5 * hertz->contact_duration()},
+      {"contact_start", fe.contact_start, hertz->first_touch_time()},
+      {"contact_end", fe.contact_end, hertz->first_touch_time() + hertz->contact_duration()},
+      {"duration", fe.duration, hertz->contact_duration()},
+      {"impulse", fe.impulse, hertz->impulse()},
+      {"ringing", fe.ringing, 0.}};
+  std::ofstream file(directory + "/impact_summary.csv");
+  file << "quantity,computed,hertz,relative_difference\n" << std::setprecision(12);
+  log << "  impact against Hertz (computed / Hertz / relative difference):\n";
+  for (const Row& row : rows)
+  {
+    const double difference =
+        row.reference != 0. ? (row.computed - row.reference) / row.reference : 0.;
+    file << row.quantity << "," << row.computed << "," << row.reference << "," << difference
+         << "\n";
+    log << "    " << std::left << std::setw(14) << row.quantity << std::right << std::setw(14)
+        << row.computed << std::setw(14) << row.reference << std::setw(14) << difference << "\n";
+  }
 }
 
 void AxisymmetricMeshModel::print_summary(std::ostream& out, const double time_step) const

@@ -74,10 +74,11 @@ std::string CommandLine::usage()
          "      print every entry with its documentation, default and allowed values.\n"
          "  dyncontact --help\n"
          "\n"
-         "A run writes into Output/directory: history.csv (one row per step), exact.csv (the "
-         "exact\n"
-         "solution, bars), profile_t<T>.csv, solution-*.vtu with solution.pvd, original.prm (the\n"
-         "input as given) and parameters.prm (every value in effect).\n";
+         "A run writes into Output/directory: history.csv (one row per step), the reference\n"
+         "solution (exact.csv for bars, hertz.csv and impact_summary.csv for two identical\n"
+         "spheres), profile_t<T>.csv (and contact_pressure_t<T>.csv, cells.csv for meshes),\n"
+         "solution-*.vtu with solution.pvd, original.prm (the input as given) and\n"
+         "parameters.prm (every value in effect).\n";
 }
 
 void prepare_output_directory(const std::string& directory)

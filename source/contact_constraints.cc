@@ -27,10 +27,9 @@ void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement
 {
   if (surfaces == nullptr)
     return;
-  auto geometry = surfaces->current_geometry(displacement);
+  const auto geometry = surfaces->current_geometry(displacement);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     pairs[k].normal = geometry.normals[k];
-  contact_areas = std::move(geometry.areas);
 }
 
 template <int dim>
@@ -310,13 +309,16 @@ double ContactConstraints<dim>::contact_radius(const Vector<double>& displacemen
 }
 
 template <int dim>
-std::vector<double> ContactConstraints<dim>::contact_pressures() const
+std::vector<double>
+ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) const
 {
-  std::vector<double> pressures(contact_areas.size(), 0.);
-  for (unsigned int k = 0; k < contact_areas.size(); ++k)
+  if (surfaces == nullptr)
+    return {};
+  std::vector<double> active_multipliers(pairs.size(), 0.);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
     if (active[k])
-      pressures[k] = multiplier_values[k] / contact_areas[k];
-  return pressures;
+      active_multipliers[k] = multiplier_values[k];
+  return surfaces->contact_pressures(displacement, active_multipliers);
 }
 
 template <int dim>

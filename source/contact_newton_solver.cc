@@ -135,7 +135,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
   {
     Vector<double> increment;
     typename ContactConstraints<dim>::State contact;
-    double residual_norm;
+    double merit; ///< the line search's measure of the residual, see `merit` below
   };
   std::optional<StateBeforeUpdate> before_update;
   Vector<double> newton_update;
@@ -162,7 +162,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
   for (unsigned int linear_solves = 0;;)
   {
     std::string evaluation_failure;
-    double residual_norm = 0., force_scale = 0., constraint_violation = 0.;
+    double residual_norm = 0., force_scale = 0., constraint_violation = 0., merit = 0.;
     try
     {
       if (with_tangent)
@@ -220,6 +220,14 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       for (unsigned int k = 0; k < n_pairs; ++k)
         if (contact.is_active(k))
           constraint_violation = std::max(constraint_violation, std::abs(constraint_residual[k]));
+      // The line search's merit: the force residual and the active constraints' violations
+      // turned into forces by the stiffness scale; without the latter a step that closes a gap
+      // but raises a small nonlinear force residual would be rejected forever.
+      double constraint_force_squared = 0.;
+      for (unsigned int k = 0; k < n_pairs; ++k)
+        constraint_force_squared += std::pow(
+            (contact.is_active(k) ? largest_tangent_diagonal : 1.) * constraint_residual[k], 2);
+      merit = std::sqrt(force_residual_squared + constraint_force_squared);
 
       if (!active_set_changed && residual_norm <= parameters.residual_tolerance * force_scale &&
           constraint_violation <= gap_tolerance)
@@ -232,9 +240,8 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     }
     with_tangent = true;
 
-    const bool step_failed =
-        !evaluation_failure.empty() || !std::isfinite(residual_norm) ||
-        (before_update && !active_set_changed && residual_norm > before_update->residual_norm);
+    const bool step_failed = !evaluation_failure.empty() || !std::isfinite(residual_norm) ||
+                             (before_update && !active_set_changed && merit > before_update->merit);
     if (!evaluation_failure.empty() && !before_update && !started_from_safe_increment)
     {
       started_from_safe_increment = true;
@@ -274,7 +281,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     residual *= -1.;
     newton_update = solve_linear_system(residual);
     ++linear_solves;
-    before_update = StateBeforeUpdate{increment, contact.state(), residual_norm};
+    before_update = StateBeforeUpdate{increment, contact.state(), merit};
     step_length   = 1.;
     take_step(step_length);
     active_set_changed = contact.update_active_set(

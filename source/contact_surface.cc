@@ -5,6 +5,7 @@
 #include <deal.II/fe/mapping_q_eulerian.h>
 
 #include <algorithm>
+#include <map>
 
 namespace dyncontact
 {
@@ -33,12 +34,46 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
                      ", so this contact surface is empty.");
   std::sort(first_dofs.begin(), first_dofs.end());
   first_dofs.erase(std::unique(first_dofs.begin(), first_dofs.end()), first_dofs.end());
+  std::map<types::global_dof_index, unsigned int> node_of_first_dof; // index in surface_nodes
   for (const auto& node : nodes.nodes())
     if (std::binary_search(first_dofs.begin(), first_dofs.end(), node.dofs[0]))
     {
       node_of_first_dof.emplace(node.dofs[0], surface_nodes.size());
       surface_nodes.push_back(node);
     }
+  for (const auto& [cell, face] : faces)
+  {
+    cell->get_dof_indices(cell_dofs);
+    nodes_of_face.emplace_back();
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first == 0 && fe.has_support_on_face(i, face))
+        nodes_of_face.back().emplace_back(i, node_of_first_dof.at(cell_dofs[i]));
+  }
+}
+
+template <int dim>
+template <typename Integrand>
+void ContactSurface<dim>::integrate_over_faces(const Mapping<dim>& mapping,
+                                               const Integrand& integrand) const
+{
+  // Exact for a product of two shape functions times a linear measure factor on a straight face.
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  FEFaceValues<dim> at_gauss_points(mapping,
+                                    fe,
+                                    QGauss<dim - 1>(fe.degree + 2),
+                                    update_values | update_quadrature_points | update_JxW_values);
+  for (unsigned int f = 0; f < faces.size(); ++f)
+  {
+    const auto& [cell, face] = faces[f];
+    at_gauss_points.reinit(cell, face);
+    for (unsigned int q = 0; q < at_gauss_points.n_quadrature_points; ++q)
+      integrand(
+          nodes_of_face[f],
+          at_gauss_points,
+          q,
+          kinematics.measure_factor(at_gauss_points.quadrature_point(q), cell->material_id()) *
+              at_gauss_points.JxW(q));
+  }
 }
 
 template <int dim>
@@ -47,49 +82,57 @@ ContactSurface<dim>::current_geometry(const Vector<double>& displacement) const
 {
   const FiniteElement<dim>& fe = dof_handler.get_fe();
   const MappingQEulerian<dim, Vector<double>> current_mapping(fe.degree, dof_handler, displacement);
+  Geometry geometry{std::vector<Tensor<1, dim>>(surface_nodes.size()),
+                    std::vector<double>(surface_nodes.size(), 0.)};
+
   // Normals at the nodes: a face quadrature whose points are the face's support points; the node
-  // at point q is the DoF whose (Lagrange) shape function is one there. Areas: Gauss quadrature
-  // exact for the shape function times a linear measure factor on a straight face.
+  // at point q is the one whose (Lagrange) shape function is one there.
   const Quadrature<dim - 1> node_points(fe.base_element(0).get_unit_face_support_points());
   FEFaceValues<dim> at_nodes(
       current_mapping, fe, node_points, update_values | update_normal_vectors);
-  FEFaceValues<dim> at_gauss_points(current_mapping,
-                                    fe,
-                                    QGauss<dim - 1>(fe.degree + 2),
-                                    update_values | update_quadrature_points | update_JxW_values);
-
-  Geometry geometry{std::vector<Tensor<1, dim>>(surface_nodes.size()),
-                    std::vector<double>(surface_nodes.size(), 0.)};
-  std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-  std::vector<unsigned int> face_dofs; // local DoFs of component 0 supported on the face
-  for (const auto& [cell, face] : faces)
+  for (unsigned int f = 0; f < faces.size(); ++f)
   {
-    cell->get_dof_indices(cell_dofs);
-    face_dofs.clear();
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      if (fe.system_to_component_index(i).first == 0 && fe.has_support_on_face(i, face))
-        face_dofs.push_back(i);
-
-    at_nodes.reinit(cell, face);
+    at_nodes.reinit(faces[f].first, faces[f].second);
     for (unsigned int q = 0; q < node_points.size(); ++q)
-      for (const unsigned int i : face_dofs)
-        if (at_nodes.shape_value_component(i, q, 0) > 0.5)
-          geometry.normals[node_of_first_dof.at(cell_dofs[i])] += at_nodes.normal_vector(q);
-
-    at_gauss_points.reinit(cell, face);
-    for (unsigned int q = 0; q < at_gauss_points.n_quadrature_points; ++q)
-    {
-      const double measure =
-          kinematics.measure_factor(at_gauss_points.quadrature_point(q), cell->material_id()) *
-          at_gauss_points.JxW(q);
-      for (const unsigned int i : face_dofs)
-        geometry.areas[node_of_first_dof.at(cell_dofs[i])] +=
-            at_gauss_points.shape_value_component(i, q, 0) * measure;
-    }
+      for (const auto& [local_dof, node] : nodes_of_face[f])
+        if (at_nodes.shape_value_component(local_dof, q, 0) > 0.5)
+          geometry.normals[node] += at_nodes.normal_vector(q);
   }
   for (auto& normal : geometry.normals)
     normal /= normal.norm();
+
+  integrate_over_faces(current_mapping,
+                       [&geometry](const auto& face_nodes,
+                                   const FEFaceValues<dim>& values,
+                                   const unsigned int q,
+                                   const double measure)
+                       {
+                         for (const auto& [local_dof, node] : face_nodes)
+                           geometry.areas[node] +=
+                               values.shape_value_component(local_dof, q, 0) * measure;
+                       });
   return geometry;
+}
+
+template <int dim>
+Eigen::MatrixXd ContactSurface<dim>::mass_matrix(const Vector<double>& displacement) const
+{
+  const MappingQEulerian<dim, Vector<double>> current_mapping(
+      dof_handler.get_fe().degree, dof_handler, displacement);
+  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(surface_nodes.size(), surface_nodes.size());
+  integrate_over_faces(current_mapping,
+                       [&mass](const auto& face_nodes,
+                               const FEFaceValues<dim>& values,
+                               const unsigned int q,
+                               const double measure)
+                       {
+                         for (const auto& [dof_i, node_i] : face_nodes)
+                           for (const auto& [dof_j, node_j] : face_nodes)
+                             mass(node_i, node_j) += values.shape_value_component(dof_i, q, 0) *
+                                                     values.shape_value_component(dof_j, q, 0) *
+                                                     measure;
+                       });
+  return mass;
 }
 
 template <int dim>

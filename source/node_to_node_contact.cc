@@ -91,6 +91,22 @@ NodeToNodeContact<dim>::current_geometry(const Vector<double>& displacement) con
   return geometry;
 }
 
+template <int dim>
+std::vector<double>
+NodeToNodeContact<dim>::contact_pressures(const Vector<double>& displacement,
+                                          const std::vector<double>& multipliers) const
+{
+  AssertDimension(multipliers.size(), candidate_pairs.size());
+  Eigen::VectorXd nodal_forces = Eigen::VectorXd::Zero(surface_a.nodes().size());
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
+    nodal_forces(surface_nodes_of_pair[k].first) = multipliers[k];
+  const Eigen::VectorXd pressure = surface_a.mass_matrix(displacement).ldlt().solve(nodal_forces);
+  std::vector<double> pressures(candidate_pairs.size());
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
+    pressures[k] = pressure(surface_nodes_of_pair[k].first);
+  return pressures;
+}
+
 template class NodeToNodeContact<1>;
 template class NodeToNodeContact<2>;
 template class NodeToNodeContact<3>;

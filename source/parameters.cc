@@ -369,7 +369,9 @@ void ContactParameters::declare_parameters(ParameterHandler& prm)
                     "100",
                     Patterns::Double(0.),
                     "Penalty only: stiffness eps of a pair [force/length] = this factor [-] times "
-                    "E A / h of the stiffer side (h: element length at the contact node), > 0. "
+                    "E A / h of the stiffer side, > 0. Bars: A the cross-section, h the element "
+                    "length at the contact node; meshes: A the pair's contact area (2 pi r "
+                    "weighted), h the shortest cell edge. "
                     "With the classical scheme and beta < gamma/2 a large penalty needs a small "
                     "time step (a warning at start says so).");
   prm.leave_subsection();
@@ -528,8 +530,9 @@ void OutputParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry("write exact solution",
                     "true",
                     Patterns::Bool(),
-                    "Write exact.csv, the exact 1D wave solution at every step, beside "
-                    "history.csv.");
+                    "Write the independent reference solution at every step beside history.csv: "
+                    "exact.csv (bars, exact 1D waves) or hertz.csv (Hertz's theory, for two "
+                    "identical spheres approaching along the axis).");
   prm.leave_subsection();
 }
 

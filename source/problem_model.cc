@@ -28,6 +28,11 @@ void ProblemModel<dim>::write_reference(const std::string&,
 {
 }
 
+template <int dim>
+void ProblemModel<dim>::summarize_run(const std::string&, const History&, std::ostream&) const
+{
+}
+
 template class ProblemModel<1>;
 template class ProblemModel<2>;
 template class ProblemModel<3>;

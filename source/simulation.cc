@@ -37,7 +37,8 @@ std::vector<std::string> Simulation<dim>::history_columns() const
                                       "max_penetration",
                                       "force_imbalance"};
   if (dim > 1)
-    columns.push_back("contact_radius");
+    for (const std::string column : {"contact_radius", "centre_pressure"})
+      columns.push_back(column);
   for (unsigned int b = 1; b <= model->n_bodies(); ++b)
     for (const std::string quantity : {"momentum_", "u_tip_", "v_tip_", "a_tip_"})
       columns.push_back(quantity + std::to_string(b));
@@ -75,6 +76,21 @@ void Simulation<dim>::setup()
                                                  parameters.newton,
                                                  GridTools::minimal_cell_diameter(triangulation));
   monitors = model->monitor_nodes(*nodes);
+  // The pair nearest to the axis of the last coordinate (axisymmetry: r = 0), whose pressure is
+  // recorded as centre_pressure.
+  const auto axis_distance = [](const ContactPair<dim>& pair)
+  {
+    double distance_squared = 0.;
+    for (unsigned int d = 0; d + 1 < dim; ++d)
+      distance_squared += pair.node_a.position[d] * pair.node_a.position[d];
+    return distance_squared;
+  };
+  const auto& pairs = contact->candidate_pairs();
+  innermost_pair    = std::min_element(pairs.begin(),
+                                    pairs.end(),
+                                    [&](const ContactPair<dim>& a, const ContactPair<dim>& b)
+                                    { return axis_distance(a) < axis_distance(b); }) -
+                   pairs.begin();
 
   const double dt = parameters.time.time_step;
   n_steps         = parameters.time.n_steps();
@@ -197,7 +213,7 @@ template <int dim>
 Vector<double> Simulation<dim>::contact_traction() const
 {
   Vector<double> traction(dof_handler.n_dofs());
-  const std::vector<double> pressures = contact->contact_pressures();
+  const std::vector<double> pressures = contact->contact_pressures(displacement);
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
   {
     const ContactPair<dim>& pair = contact->candidate_pairs()[k];
@@ -213,7 +229,7 @@ Vector<double> Simulation<dim>::contact_traction() const
 template <int dim>
 void Simulation<dim>::write_contact_pressure() const
 {
-  const std::vector<double> pressures = contact->contact_pressures();
+  const std::vector<double> pressures = contact->contact_pressures(displacement);
   std::vector<typename FieldOutput<dim>::PressureSample> samples;
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
   {
@@ -259,7 +275,11 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
                              contact->max_penetration(displacement),
                              force_imbalance};
   if (dim > 1)
+  {
+    const std::vector<double> pressures = contact->contact_pressures(displacement);
     row.push_back(contact->contact_radius(displacement));
+    row.push_back(pressures.empty() ? 0. : pressures[innermost_pair]);
+  }
   const Tensor<1, dim> direction = model->impact_direction();
   std::vector<double> momentum(monitors.size(), 0.);
   for (const auto& node : nodes->nodes())
@@ -343,6 +363,8 @@ void Simulation<dim>::run()
           << "  active pairs " << contact->n_active() << "  linear solves " << linear_solves
           << "  total energy " << step_history.value(step, "total_energy") << "\n";
   }
+  if (is_root_rank)
+    model->summarize_run(directory, step_history, log.get_stream());
   log << "dyncontact: done, " << n_steps << " steps, " << total_solves
       << " linear solves. Results in " << directory << "\n";
 }

@@ -1,8 +1,11 @@
 #pragma once
 
 #include <dyncontact/gmsh_mesh.h>
+#include <dyncontact/hertz_reference.h>
 #include <dyncontact/parameters.h>
 #include <dyncontact/problem_model.h>
+
+#include <optional>
 
 namespace dyncontact
 {
@@ -48,6 +51,29 @@ public:
   /** Body b's `Surface traction` on its surface (boundary id SphereMeshIds::surface(b)). */
   std::vector<SurfaceTraction<2>> surface_tractions() const override;
   Tensor<1, 2> impact_direction() const override;
+  /**
+   * Writes hertz.csv (time, contact_force, approach of Hertz's theory at `times`) if the problem
+   * is a Hertz impact, see hertz_reference().
+   */
+  void write_reference(const std::string& directory,
+                       const std::vector<double>& times,
+                       const std::vector<Node<2>>& monitors) const override;
+  /**
+   * For a Hertz impact: measures the contact force history (measure_impact()) and writes
+   * impact_summary.csv, the peak force, its time, contact start, end and duration, impulse and
+   * ringing next to Hertz's values and the relative differences.
+   */
+  void summarize_run(const std::string& directory,
+                     const History& history,
+                     std::ostream& log) const override;
+  /**
+   * Hertz's theory of this impact if it applies: two spheres of equal radius and equal material
+   * constants whose centres approach along the axis with the initial velocities given (evaluated at
+   * the centres); first touch at (distance of the centres - 2 R) / approach speed. Empty otherwise
+   * (one body, other shapes, dissimilar spheres, spheres not approaching). Valid after
+   * create_triangulation().
+   */
+  std::optional<HertzImpactOfIdenticalSpheres> hertz_reference() const;
   void print_summary(std::ostream& out, double time_step) const override;
 
 private:

@@ -30,8 +30,7 @@ class NodeToNodeContact;
  * when it penetrates and leaves when its multiplier turns tensile (Hughes et al. 1976).
  *
  * Normals are fixed unless the pairs come from a NodeToNodeContact: then update_geometry() moves
- * them to the current configuration (call it whenever the displacement changes) and records the
- * pairs' contact areas, from which the contact pressure follows.
+ * them to the current configuration (call it whenever the displacement changes).
  *
  * It does not choose time steps, assemble elasticity or solve linear systems.
  */
@@ -46,8 +45,8 @@ public:
   ContactConstraints(const NodeToNodeContact<dim>& surfaces, ContactFormulation formulation);
 
   /**
-   * For pairs of a NodeToNodeContact: sets every normal and contact area to those at
-   * `displacement`. Does nothing for fixed normals.
+   * For pairs of a NodeToNodeContact: sets every normal to that at `displacement`. Does nothing
+   * for fixed normals.
    */
   void update_geometry(const Vector<double>& displacement);
 
@@ -155,10 +154,10 @@ public:
   double contact_radius(const Vector<double>& displacement) const;
 
   /**
-   * Contact pressure lambda_k / area_k of every pair (zero if inactive), with the areas of the last
-   * update_geometry(); empty for pairs with fixed normals.
+   * The contact pressure at every pair (see NodeToNodeContact::contact_pressures()) at
+   * `displacement` from the multipliers of the active pairs; empty for pairs with fixed normals.
    */
-  std::vector<double> contact_pressures() const;
+  std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
 private:
   /** Normal component n . f of a nodal vector field at `node`. */
@@ -178,7 +177,6 @@ private:
 
   std::vector<ContactPair<dim>> pairs;
   const NodeToNodeContact<dim>* surfaces = nullptr; ///< null: fixed normals
-  std::vector<double> contact_areas;                ///< per pair, with `surfaces` only
   ContactFormulation formulation;
   std::vector<bool> active;
   Vector<double> multiplier_values;

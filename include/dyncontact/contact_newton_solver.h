@@ -28,7 +28,8 @@ namespace dyncontact
  * the last tangent for the force scale), which halves the cost of steps the predictor already
  * solves, such as free flight. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
  * A backtracking line search halves an update (up to 10 times) when the residual at its end cannot
- * be evaluated (an inverted element) or grows while the active set stays the same.
+ * be evaluated (an inverted element) or grows while the active set stays the same, the residual
+ * measured as the force residual together with the active gaps times the largest tangent diagonal.
  *
  * Parallel layout: rows of the matrix are distributed like the DoFs, the multiplier rows belong to
  * the last rank; the direct solver is Amesos KLU on one rank and Amesos MUMPS on several. Vectors

@@ -6,9 +6,10 @@
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
 
-#include <map>
+#include <Eigen/Dense>
 #include <vector>
 
 namespace dyncontact
@@ -58,14 +59,30 @@ public:
   /** The geometry at displacement `displacement` (a whole vector in the DoFHandler's numbering). */
   Geometry current_geometry(const Vector<double>& displacement) const;
 
+  /**
+   * The consistent surface mass matrix M_ij = integral of N_i N_j times the measure factor over
+   * the current faces, i, j indices into nodes(): symmetric positive definite. Solving M p = f
+   * turns nodal forces f into the pressure field p they are consistent with, also at nodes whose
+   * tributary area vanishes (a Q2 vertex on the axis of an axisymmetric model has area zero: the
+   * integral of N_i 2 pi r over its face is zero for a straight face).
+   */
+  Eigen::MatrixXd mass_matrix(const Vector<double>& displacement) const;
+
 private:
   const DoFHandler<dim>& dof_handler;
   const Kinematics<dim>& kinematics;
   const types::boundary_id boundary;
   std::vector<Node<dim>> surface_nodes;
-  /** Index in surface_nodes of the node with a given first DoF. */
-  std::map<types::global_dof_index, unsigned int> node_of_first_dof;
   /** (cell, face number) of every surface face. */
   std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>> faces;
+  /** Per face: (local DoF of component 0, index in surface_nodes) of each of its nodes. */
+  std::vector<std::vector<std::pair<unsigned int, unsigned int>>> nodes_of_face;
+
+  /**
+   * Calls integrand(nodes_of_face[f], fe_values, q, measure) at every Gauss point q of every face f
+   * in the configuration of `mapping`, with measure = measure factor times JxW.
+   */
+  template <typename Integrand>
+  void integrate_over_faces(const Mapping<dim>& mapping, const Integrand& integrand) const;
 };
 } // namespace dyncontact

@@ -30,7 +30,8 @@ namespace dyncontact
  * linearized): that term is proportional to the separation of the two nodes across n, which
  * vanishes for a closed pair of matching nodes, so Newton keeps its quadratic rate as the pairs
  * close. Contact area of a pair: the mean of its two nodes' tributary areas (2 pi r weighted in
- * axisymmetry), which makes lambda / area the contact pressure.
+ * axisymmetry); it scales the penalty stiffness. The contact pressure comes from a consistent
+ * recovery instead (contact_pressures()).
  *
  * It is not a general contact search: no sliding beyond the matched partner, no segment
  * projection, no self contact.
@@ -60,6 +61,16 @@ public:
 
   /** The pairs' geometry at `displacement` (a whole vector in the DoFHandler's numbering). */
   PairGeometry current_geometry(const Vector<double>& displacement) const;
+
+  /**
+   * The contact pressure at every pair's node of surface A: the pressure field on surface A
+   * consistent with the nodal forces `multipliers` (one per pair, zero for inactive pairs), i.e.
+   * the solution of M p = f with the surface's consistent mass matrix (ContactSurface::mass_matrix)
+   * at `displacement`. Exact for a pressure that the surface's shape functions represent; it also
+   * gives the pressure at the axis node of an axisymmetric model, whose tributary area is zero.
+   */
+  std::vector<double> contact_pressures(const Vector<double>& displacement,
+                                        const std::vector<double>& multipliers) const;
 
 private:
   ContactSurface<dim> surface_a, surface_b;

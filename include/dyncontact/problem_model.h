@@ -3,6 +3,7 @@
 #include <dyncontact/contact_constraints.h>
 #include <dyncontact/elastic_bodies.h>
 #include <dyncontact/global.h>
+#include <dyncontact/history.h>
 #include <dyncontact/kinematics.h>
 #include <dyncontact/node_index.h>
 #include <dyncontact/node_to_node_contact.h>
@@ -85,6 +86,13 @@ public:
   virtual void write_reference(const std::string& directory,
                                const std::vector<double>& times,
                                const std::vector<Node<dim>>& monitors) const;
+
+  /**
+   * Compares the finished run's `history` with the model's reference, writing the comparison into
+   * `directory` and a short report to `log`. The default does nothing.
+   */
+  virtual void
+  summarize_run(const std::string& directory, const History& history, std::ostream& log) const;
 
   /** A few lines describing the problem (sizes, wave speeds, Courant numbers). */
   virtual void print_summary(std::ostream& out, double time_step) const = 0;

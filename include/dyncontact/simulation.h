@@ -102,6 +102,7 @@ private:
   std::unique_ptr<ContactConstraints<dim>> contact;
   std::unique_ptr<ContactNewtonSolver<dim>> solver;
   std::vector<Node<dim>> monitors;
+  unsigned int innermost_pair = 0; ///< candidate pair nearest to the axis (centre_pressure)
   std::unique_ptr<FieldOutput<dim>> field_output;
   std::set<unsigned int> profile_steps; ///< steps at which a profile is written
   unsigned int n_steps;
