@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# Wall time of the paper's two sphere runs (prm/spheres_rho1.prm, prm/spheres_rho0.001.prm, their
+# default mesh) on 1 and 2 MPI ranks, with the DoF count and Newton linear solves per step, from
+# one Release build. Extra arguments go to every run (e.g. --set "Mesh/geo parameters=...").
+# Writes bench/results/paper_spheres.csv and prints it. Run on an otherwise idle machine.
+#   bench/paper_spheres.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j2 --target dyncontact >/dev/null
+mkdir -p bench/results
+table=bench/results/paper_spheres.csv
+echo "case,ranks,wall_seconds,dofs,steps,linear_solves,steps_in_contact,solves_per_contact_step" >"$table"
+for case in spheres_rho1 spheres_rho0.001; do
+  for ranks in 1 2; do
+    output=bench/results/$case-np$ranks
+    start=$(date +%s.%N)
+    mpirun -np "$ranks" build/dyncontact "prm/$case.prm" --output "$output" \
+      --set "Output/vtu interval=0" "$@" >"$output.log"
+    end=$(date +%s.%N)
+    /usr/bin/python3 - "$case" "$ranks" "$(echo "$end - $start" | bc)" "$output" >>"$table" <<'PY'
+import csv, re, sys
+case, ranks, seconds, output = sys.argv[1:]
+rows = list(csv.DictReader(open(output + '/history.csv')))[1:]
+solves = [float(r['newton_iterations']) for r in rows]
+contact = [float(r['newton_iterations']) for r in rows if float(r['active_constraints']) > 0]
+dofs = re.search(r'(\d+) displacement DoFs', open(output + '.log').read()).group(1)
+print(f"{case},{ranks},{float(seconds):.1f},{dofs},{len(rows)},{sum(solves):.0f},{len(contact)},"
+      f"{sum(contact) / max(1, len(contact)):.2f}")
+PY
+  done
+done
+column -s, -t "$table"
