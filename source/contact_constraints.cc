@@ -27,9 +27,9 @@ void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement
 {
   if (surfaces == nullptr)
     return;
-  const auto geometry = surfaces->current_geometry(displacement);
+  const auto normals = surfaces->current_normals(displacement);
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    pairs[k].normal = geometry.normals[k];
+    pairs[k].normal = normals[k];
 }
 
 template <int dim>
@@ -295,16 +295,8 @@ double ContactConstraints<dim>::contact_radius(const Vector<double>& displacemen
   double radius = 0.;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (active[k])
-    {
-      // Distance from the axis along the last coordinate: the components before it.
-      double distance_squared = 0.;
-      for (unsigned int d = 0; d + 1 < dim; ++d)
-      {
-        const double x = pairs[k].node_a.position[d] + displacement[pairs[k].node_a.dofs[d]];
-        distance_squared += x * x;
-      }
-      radius = std::max(radius, std::sqrt(distance_squared));
-    }
+      radius =
+          std::max(radius, distance_from_axis(current_position(pairs[k].node_a, displacement)));
   return radius;
 }
 

@@ -77,41 +77,45 @@ void ContactSurface<dim>::integrate_over_faces(const Mapping<dim>& mapping,
 }
 
 template <int dim>
-typename ContactSurface<dim>::Geometry
-ContactSurface<dim>::current_geometry(const Vector<double>& displacement) const
+std::vector<Tensor<1, dim>> ContactSurface<dim>::normals(const Vector<double>& displacement) const
 {
   const FiniteElement<dim>& fe = dof_handler.get_fe();
   const MappingQEulerian<dim, Vector<double>> current_mapping(fe.degree, dof_handler, displacement);
-  Geometry geometry{std::vector<Tensor<1, dim>>(surface_nodes.size()),
-                    std::vector<double>(surface_nodes.size(), 0.)};
-
-  // Normals at the nodes: a face quadrature whose points are the face's support points; the node
-  // at point q is the one whose (Lagrange) shape function is one there.
+  // A face quadrature whose points are the face's support points; the node at point q is the one
+  // whose (Lagrange) shape function is one there.
   const Quadrature<dim - 1> node_points(fe.base_element(0).get_unit_face_support_points());
   FEFaceValues<dim> at_nodes(
       current_mapping, fe, node_points, update_values | update_normal_vectors);
+  std::vector<Tensor<1, dim>> nodal_normals(surface_nodes.size());
   for (unsigned int f = 0; f < faces.size(); ++f)
   {
     at_nodes.reinit(faces[f].first, faces[f].second);
     for (unsigned int q = 0; q < node_points.size(); ++q)
       for (const auto& [local_dof, node] : nodes_of_face[f])
         if (at_nodes.shape_value_component(local_dof, q, 0) > 0.5)
-          geometry.normals[node] += at_nodes.normal_vector(q);
+          nodal_normals[node] += at_nodes.normal_vector(q);
   }
-  for (auto& normal : geometry.normals)
+  for (auto& normal : nodal_normals)
     normal /= normal.norm();
+  return nodal_normals;
+}
 
+template <int dim>
+std::vector<double> ContactSurface<dim>::tributary_areas(const Vector<double>& displacement) const
+{
+  const MappingQEulerian<dim, Vector<double>> current_mapping(
+      dof_handler.get_fe().degree, dof_handler, displacement);
+  std::vector<double> areas(surface_nodes.size(), 0.);
   integrate_over_faces(current_mapping,
-                       [&geometry](const auto& face_nodes,
-                                   const FEFaceValues<dim>& values,
-                                   const unsigned int q,
-                                   const double measure)
+                       [&areas](const auto& face_nodes,
+                                const FEFaceValues<dim>& values,
+                                const unsigned int q,
+                                const double measure)
                        {
                          for (const auto& [local_dof, node] : face_nodes)
-                           geometry.areas[node] +=
-                               values.shape_value_component(local_dof, q, 0) * measure;
+                           areas[node] += values.shape_value_component(local_dof, q, 0) * measure;
                        });
-  return geometry;
+  return areas;
 }
 
 template <int dim>
@@ -133,12 +137,6 @@ Eigen::MatrixXd ContactSurface<dim>::mass_matrix(const Vector<double>& displacem
                                                      measure;
                        });
   return mass;
-}
-
-template <int dim>
-typename ContactSurface<dim>::Geometry ContactSurface<dim>::reference_geometry() const
-{
-  return current_geometry(Vector<double>(dof_handler.n_dofs()));
 }
 
 template class ContactSurface<1>;

@@ -28,8 +28,11 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
   const std::vector<Node<dim>>& nodes_b = this->surface_b.nodes();
   Tensor<1, dim> approach               = centroid(nodes_b) - centroid(nodes_a);
   approach /= approach.norm();
-  const auto geometry_a    = this->surface_a.reference_geometry();
-  const auto geometry_b    = this->surface_b.reference_geometry();
+  const Vector<double> undeformed(this->surface_a.n_dofs());
+  const auto normals_a     = this->surface_a.normals(undeformed);
+  const auto normals_b     = this->surface_b.normals(undeformed);
+  const auto areas_a       = this->surface_a.tributary_areas(undeformed);
+  const auto areas_b       = this->surface_b.tributary_areas(undeformed);
   const auto across_offset = [&approach](const Tensor<1, dim>& offset)
   { return (offset - (offset * approach) * approach).norm(); };
 
@@ -37,12 +40,12 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
   std::ostringstream first_unmatched;
   for (unsigned int i = 0; i < nodes_a.size(); ++i)
   {
-    if (geometry_a.normals[i] * approach < 0.5)
+    if (normals_a[i] * approach < 0.5)
       continue;
     unsigned int partner = nodes_b.size();
     double offset        = std::numeric_limits<double>::max();
     for (unsigned int j = 0; j < nodes_b.size(); ++j)
-      if (geometry_b.normals[j] * approach <= -0.5 &&
+      if (normals_b[j] * approach <= -0.5 &&
           across_offset(nodes_b[j].position - nodes_a[i].position) < offset)
       {
         partner = j;
@@ -55,15 +58,15 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
       continue;
     }
     ContactPair<dim> pair;
-    pair.node_a = nodes_a[i];
-    pair.node_b = nodes_b[partner];
-    pair.normal = geometry_a.normals[i] - geometry_b.normals[partner];
-    pair.normal /= pair.normal.norm();
-    pair.penalty_stiffness =
-        penalty_stiffness_per_area * 0.5 * (geometry_a.areas[i] + geometry_b.areas[partner]);
+    pair.node_a            = nodes_a[i];
+    pair.node_b            = nodes_b[partner];
+    pair.penalty_stiffness = penalty_stiffness_per_area * 0.5 * (areas_a[i] + areas_b[partner]);
     candidate_pairs.push_back(pair);
     surface_nodes_of_pair.emplace_back(i, partner);
   }
+  const auto reference_normals = current_normals(undeformed);
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
+    candidate_pairs[k].normal = reference_normals[k];
   if (unmatched > 0)
     throw InputError(std::to_string(unmatched) + " of the " +
                      std::to_string(unmatched + candidate_pairs.size()) +
@@ -76,19 +79,18 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
 }
 
 template <int dim>
-typename NodeToNodeContact<dim>::PairGeometry
-NodeToNodeContact<dim>::current_geometry(const Vector<double>& displacement) const
+std::vector<Tensor<1, dim>>
+NodeToNodeContact<dim>::current_normals(const Vector<double>& displacement) const
 {
-  const auto geometry_a = surface_a.current_geometry(displacement);
-  const auto geometry_b = surface_b.current_geometry(displacement);
-  PairGeometry geometry;
+  const auto normals_a = surface_a.normals(displacement);
+  const auto normals_b = surface_b.normals(displacement);
+  std::vector<Tensor<1, dim>> pair_normals;
   for (const auto& [index_a, index_b] : surface_nodes_of_pair)
   {
-    Tensor<1, dim> normal = geometry_a.normals[index_a] - geometry_b.normals[index_b];
-    geometry.normals.push_back(normal / normal.norm());
-    geometry.areas.push_back(0.5 * (geometry_a.areas[index_a] + geometry_b.areas[index_b]));
+    const Tensor<1, dim> normal = normals_a[index_a] - normals_b[index_b];
+    pair_normals.push_back(normal / normal.norm());
   }
-  return geometry;
+  return pair_normals;
 }
 
 template <int dim>

@@ -76,20 +76,14 @@ void Simulation<dim>::setup()
                                                  parameters.newton,
                                                  GridTools::minimal_cell_diameter(triangulation));
   monitors = model->monitor_nodes(*nodes);
-  // The pair nearest to the axis of the last coordinate (axisymmetry: r = 0), whose pressure is
-  // recorded as centre_pressure.
-  const auto axis_distance = [](const ContactPair<dim>& pair)
-  {
-    double distance_squared = 0.;
-    for (unsigned int d = 0; d + 1 < dim; ++d)
-      distance_squared += pair.node_a.position[d] * pair.node_a.position[d];
-    return distance_squared;
-  };
+  // The pair nearest to the axis (axisymmetry: r = 0), whose pressure is centre_pressure.
   const auto& pairs = contact->candidate_pairs();
   innermost_pair    = std::min_element(pairs.begin(),
                                     pairs.end(),
-                                    [&](const ContactPair<dim>& a, const ContactPair<dim>& b)
-                                    { return axis_distance(a) < axis_distance(b); }) -
+                                    [](const ContactPair<dim>& a, const ContactPair<dim>& b) {
+                                      return distance_from_axis(a.node_a.position) <
+                                             distance_from_axis(b.node_a.position);
+                                    }) -
                    pairs.begin();
 
   const double dt = parameters.time.time_step;
@@ -210,10 +204,9 @@ Vector<double> Simulation<dim>::net_internal_force() const
 }
 
 template <int dim>
-Vector<double> Simulation<dim>::contact_traction() const
+Vector<double> Simulation<dim>::contact_traction(const std::vector<double>& pressures) const
 {
   Vector<double> traction(dof_handler.n_dofs());
-  const std::vector<double> pressures = contact->contact_pressures(displacement);
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
   {
     const ContactPair<dim>& pair = contact->candidate_pairs()[k];
@@ -227,19 +220,14 @@ Vector<double> Simulation<dim>::contact_traction() const
 }
 
 template <int dim>
-void Simulation<dim>::write_contact_pressure() const
+void Simulation<dim>::write_contact_pressure(const std::vector<double>& pressures) const
 {
-  const std::vector<double> pressures = contact->contact_pressures(displacement);
   std::vector<typename FieldOutput<dim>::PressureSample> samples;
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
-  {
-    const Node<dim>& node = contact->candidate_pairs()[k].node_a;
-    Point<dim> position   = node.position;
-    for (unsigned int d = 0; d < dim; ++d)
-      position[d] += displacement[node.dofs[d]];
-    samples.push_back(
-        {position, contact->gap(k, displacement), pressures[k], contact->is_active(k)});
-  }
+    samples.push_back({current_position(contact->candidate_pairs()[k].node_a, displacement),
+                       contact->gap(k, displacement),
+                       pressures[k],
+                       contact->is_active(k)});
   field_output->write_contact_pressure(time, samples);
 }
 
@@ -274,11 +262,14 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
                              newmark.algorithmic_energy(kinetic, strain, acceleration_energy),
                              contact->max_penetration(displacement),
                              force_imbalance};
+  // Contact pressures (surface contact only): one dense solve per step, skipped without contact.
+  const std::vector<double> pressures = surface_contact && contact->n_active() > 0
+                                            ? contact->contact_pressures(displacement)
+                                            : std::vector<double>(contact->n_pairs(), 0.);
   if (dim > 1)
   {
-    const std::vector<double> pressures = contact->contact_pressures(displacement);
     row.push_back(contact->contact_radius(displacement));
-    row.push_back(pressures.empty() ? 0. : pressures[innermost_pair]);
+    row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
   }
   const Tensor<1, dim> direction = model->impact_direction();
   std::vector<double> momentum(monitors.size(), 0.);
@@ -300,7 +291,8 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
 
   if (parameters.output.vtu_interval > 0 && step % parameters.output.vtu_interval == 0)
   {
-    const Vector<double> traction = surface_contact ? contact_traction() : Vector<double>();
+    const Vector<double> traction =
+        surface_contact ? contact_traction(pressures) : Vector<double>();
     field_output->write_fields(
         step, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
   }
@@ -308,7 +300,7 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
   {
     field_output->write_profile(time, nodes->nodes(), displacement, velocity, acceleration);
     if (surface_contact)
-      write_contact_pressure();
+      write_contact_pressure(pressures);
   }
 }
 

@@ -43,21 +43,20 @@ public:
                  const NodeIndex<dim>& nodes,
                  types::boundary_id boundary);
 
+  /** Size of the displacement vectors this surface is evaluated at. */
+  types::global_dof_index n_dofs() const { return dof_handler.n_dofs(); }
+
   /** The surface nodes, ordered as in NodeIndex (by body, then position). */
   const std::vector<Node<dim>>& nodes() const { return surface_nodes; }
 
-  /** Current outward unit normals and tributary areas, one per node of nodes(). */
-  struct Geometry
-  {
-    std::vector<Tensor<1, dim>> normals;
-    std::vector<double> areas;
-  };
+  /**
+   * Outward unit normals at `displacement` (a whole vector in the DoFHandler's numbering), one per
+   * node of nodes().
+   */
+  std::vector<Tensor<1, dim>> normals(const Vector<double>& displacement) const;
 
-  /** The geometry of the undeformed surface. */
-  Geometry reference_geometry() const;
-
-  /** The geometry at displacement `displacement` (a whole vector in the DoFHandler's numbering). */
-  Geometry current_geometry(const Vector<double>& displacement) const;
+  /** Tributary areas at `displacement`, one per node of nodes(). */
+  std::vector<double> tributary_areas(const Vector<double>& displacement) const;
 
   /**
    * The consistent surface mass matrix M_ij = integral of N_i N_j times the measure factor over

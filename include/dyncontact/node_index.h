@@ -5,8 +5,10 @@
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/vector.h>
 
 #include <array>
+#include <cmath>
 #include <vector>
 
 namespace dyncontact
@@ -19,6 +21,29 @@ struct Node
   Point<dim> position;
   std::array<types::global_dof_index, dim> dofs;
 };
+
+/** Current position X + u of `node` for the displacement vector `displacement`. */
+template <int dim>
+Point<dim> current_position(const Node<dim>& node, const Vector<double>& displacement)
+{
+  Point<dim> position = node.position;
+  for (unsigned int d = 0; d < dim; ++d)
+    position[d] += displacement[node.dofs[d]];
+  return position;
+}
+
+/**
+ * Distance of `point` from the axis of the last coordinate (the components before it): r in an
+ * axisymmetric model (x = r, y = z), zero in 1D.
+ */
+template <int dim>
+double distance_from_axis(const Point<dim>& point)
+{
+  double distance_squared = 0.;
+  for (unsigned int d = 0; d + 1 < dim; ++d)
+    distance_squared += point[d] * point[d];
+  return std::sqrt(distance_squared);
+}
 
 /**
  * Every node of the mesh (vertices, and for Q2 also mid-side and centre nodes), found through the

@@ -14,7 +14,7 @@ namespace dyncontact
 /**
  * Node-to-node contact between two bodies whose facing surfaces have matching nodes, such as the
  * mirror-image meshes of the paper's two spheres: the candidate pairs and, for a displacement,
- * their current normals and contact areas.
+ * their current normals and contact pressures.
  *
  * Pairing (reference configuration): with e the unit vector from body A's centroid to body B's,
  * every node of surface A whose outward normal n_A satisfies n_A . e >= 1/2 (it faces B, within
@@ -52,15 +52,11 @@ public:
   /** The candidate pairs, with their reference normals. */
   const std::vector<ContactPair<dim>>& pairs() const { return candidate_pairs; }
 
-  /** Current normal and contact area of every pair, in the order of pairs(). */
-  struct PairGeometry
-  {
-    std::vector<Tensor<1, dim>> normals;
-    std::vector<double> areas;
-  };
-
-  /** The pairs' geometry at `displacement` (a whole vector in the DoFHandler's numbering). */
-  PairGeometry current_geometry(const Vector<double>& displacement) const;
+  /**
+   * The current normal of every pair, in the order of pairs(), at `displacement` (a whole vector
+   * in the DoFHandler's numbering).
+   */
+  std::vector<Tensor<1, dim>> current_normals(const Vector<double>& displacement) const;
 
   /**
    * The contact pressure at every pair's node of surface A: the pressure field on surface A

@@ -75,10 +75,10 @@ private:
   void record_step(unsigned int step, unsigned int linear_solves);
   /** Q(u) - W at the last solve: what the contact force balances at a node. */
   Vector<double> net_internal_force() const;
-  /** The nodal traction -p n on body A and p n on body B of every active pair (VTU output). */
-  Vector<double> contact_traction() const;
+  /** The nodal traction -p n on body A and p n on body B of every pair, p = `pressures`. */
+  Vector<double> contact_traction(const std::vector<double>& pressures) const;
   /** Writes the contact pressure profile of the current step (surface contact only). */
-  void write_contact_pressure() const;
+  void write_contact_pressure(const std::vector<double>& pressures) const;
   std::vector<std::string> history_columns() const;
 
   const RunParameters parameters;
