@@ -165,6 +165,7 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
                                                 const double force_tolerance)
 {
   bool changed = false;
+  std::vector<unsigned int> tensile_pairs;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (!active[k] && gap(k, displacement) < -gap_tolerance)
     {
@@ -172,6 +173,13 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
       changed   = true;
     }
     else if (active[k] && multiplier_values[k] < -force_tolerance)
+      tensile_pairs.push_back(k);
+  // On a surface, a tensile nodal force inside compressed surroundings (the zero-area axis node of
+  // an axisymmetric Q2 surface) is not a tensile traction: such a pair stays closed.
+  const std::vector<double> pressures =
+      tensile_pairs.empty() ? std::vector<double>() : contact_pressures(displacement);
+  for (const unsigned int k : tensile_pairs)
+    if (pressures.empty() || pressures[k] < 0.)
     {
       active[k]            = false;
       multiplier_values[k] = 0.;

@@ -113,7 +113,7 @@ typename ContactNewtonSolver<dim>::Report
 ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
                                 const double inertia_factor,
                                 const Vector<double>& external_force,
-                                const Vector<double>& safe_increment,
+                                const Vector<double>& restart_increment,
                                 Vector<double>& increment)
 {
   const types::global_dof_index n_dofs = dof_handler.n_dofs();
@@ -155,9 +155,10 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     contact.add_multiplier_increment(multiplier_increment);
   };
 
-  bool started_from_safe_increment = false;
-  // The first evaluation of a step (the predictor, which often is the answer, e.g. in free flight)
-  // skips the tangent if an earlier step has supplied the tangent's diagonal for the force scale.
+  bool restarted = false;
+  // The first evaluation of a step (the initial guess, which often is the answer, e.g. in free
+  // flight) skips the tangent if an earlier step has supplied the tangent's diagonal for the force
+  // scale.
   bool with_tangent = largest_tangent_diagonal == 0.;
   for (unsigned int linear_solves = 0;;)
   {
@@ -232,21 +233,18 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       if (!active_set_changed && residual_norm <= parameters.residual_tolerance * force_scale &&
           constraint_violation <= gap_tolerance)
         return {linear_solves, residual_norm};
-      if (!with_tangent)
-      {
-        with_tangent = true; // evaluate the same point again, now with the tangent
-        continue;
-      }
     }
     with_tangent = true;
 
     const bool step_failed = !evaluation_failure.empty() || !std::isfinite(residual_norm) ||
                              (before_update && !active_set_changed && merit > before_update->merit);
-    if (!evaluation_failure.empty() && !before_update && !started_from_safe_increment)
+    // The initial guess is not the answer (or cannot be evaluated): Newton starts from the last
+    // converged configuration instead. See the class documentation for why not from the guess.
+    if (!before_update && !restarted)
     {
-      started_from_safe_increment = true;
-      increment                   = safe_increment;
-      displacement                = predictor;
+      restarted    = true;
+      increment    = restart_increment;
+      displacement = predictor;
       displacement += increment;
       contact.update_geometry(displacement);
       active_set_changed = contact.update_active_set(displacement, gap_tolerance, 0.);

@@ -106,12 +106,13 @@ void FieldOutput<dim>::write_contact_pressure(const double time,
   const std::string axes = "xyz";
   for (unsigned int d = 0; d < dim; ++d)
     file << axes[d] << ",";
-  file << "gap,pressure,active\n" << std::setprecision(15);
+  file << "gap,multiplier,pressure,active\n" << std::setprecision(15);
   for (const auto& sample : samples)
   {
     for (unsigned int d = 0; d < dim; ++d)
       file << sample.position[d] << ",";
-    file << sample.gap << "," << sample.pressure << "," << (sample.active ? 1 : 0) << '\n';
+    file << sample.gap << "," << sample.multiplier << "," << sample.pressure << ","
+         << (sample.active ? 1 : 0) << '\n';
   }
 }
 

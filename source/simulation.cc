@@ -226,6 +226,7 @@ void Simulation<dim>::write_contact_pressure(const std::vector<double>& pressure
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
     samples.push_back({current_position(contact->candidate_pairs()[k].node_a, displacement),
                        contact->gap(k, displacement),
+                       contact->active_multiplier(k),
                        pressures[k],
                        contact->is_active(k)});
   field_output->write_contact_pressure(time, samples);

@@ -27,7 +27,8 @@ class NodeToNodeContact;
  * pair gets the trivial row lambda = 0. The Lagrange multiplier formulation enforces g = 0 on the
  * active pairs; the penalty formulation is the same system with -1/eps on the multiplier
  * diagonal (lambda = -eps g, i.e. the classical penalty force eps <-g>). Active set: a pair enters
- * when it penetrates and leaves when its multiplier turns tensile (Hughes et al. 1976).
+ * when it penetrates and leaves when its multiplier turns tensile (Hughes et al. 1976) and, on a
+ * surface, so does the contact pressure at its node (see update_active_set()).
  *
  * Normals are fixed unless the pairs come from a NodeToNodeContact: then update_geometry() moves
  * them to the current configuration (call it whenever the displacement changes).
@@ -94,8 +95,11 @@ public:
 
   /**
    * Updates the active set at displacement u: inactive pairs with g < -gap_tolerance enter,
-   * active pairs with lambda < -force_tolerance leave (their multiplier is reset to zero).
-   * Returns whether anything changed.
+   * active pairs with lambda < -force_tolerance leave (their multiplier is reset to zero), except,
+   * for surface pairs, those whose contact pressure (contact_pressures()) is still compressive:
+   * a node whose consistent share of a compressive pressure is zero or negative (the axis node of
+   * an axisymmetric Q2 surface has zero tributary area) may carry a slightly tensile multiplier
+   * while its surroundings are pressed together. Returns whether anything changed.
    */
   bool update_active_set(const Vector<double>& displacement,
                          double gap_tolerance,
@@ -139,6 +143,12 @@ public:
   SideForces recovered_side_forces(const Vector<double>& lumped_mass,
                                    const Vector<double>& acceleration,
                                    const Vector<double>& net_internal_force) const;
+
+  /** The multiplier of candidate `pair` if it is active, else zero. */
+  double active_multiplier(unsigned int pair) const
+  {
+    return active[pair] ? multiplier_values[pair] : 0.;
+  }
 
   /** Sum of the multipliers of the active pairs. */
   double total_multiplier() const;

@@ -24,9 +24,18 @@ namespace dyncontact
  * Newton); the step has converged when the residual is below the tolerance times the size of the
  * force terms (inertia, internal, contact, and max diag(K_eff) |u|, the round-off scale of K u),
  * the active constraints hold to the gap tolerance, and the last update left the active set
- * unchanged. The first residual of a step is evaluated without the tangent (using the diagonal of
- * the last tangent for the force scale), which halves the cost of steps the predictor already
- * solves, such as free flight. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
+ * unchanged. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
+ *
+ * Initial guess: the residual is first evaluated at the given guess (the Newmark predictor),
+ * without the tangent (using the diagonal of the last tangent for the force scale), so that steps
+ * the predictor already solves, such as free flight, cost no linear solve. Otherwise Newton starts
+ * from the last converged configuration u_n, not from the predictor: at time steps far beyond the
+ * periods of the small elements of a contact zone (omega dt >> 1) the trapezoidal rule keeps their
+ * high-frequency response undamped, with accelerations so large that the predictor's term
+ * dt^2 (1/2 - beta) a_n throws the contact zone a sizeable fraction of an element away (4 to 8
+ * times the step's strain energy on the finest sphere mesh). From there Newton converged to
+ * spurious roots of the nonconvex finite-strain energy: the total energy doubled in one step. u_n
+ * is a valid configuration, and in that regime a close one.
  * A backtracking line search halves an update (up to 10 times) when the residual at its end cannot
  * be evaluated (an inverted element) or grows while the active set stays the same, the residual
  * measured as the force residual together with the active gaps times the largest tangent diagonal.
@@ -64,15 +73,15 @@ public:
    * Solves the step, with external forces W at t_{n+1}, for the increment u_{n+1} - u~ over the
    * predictor u~ (initial guess: the value `increment` holds on entry, usually zero); on exit
    * u_{n+1} = predictor + increment. The contact multipliers and active set are updated in place.
-   * If the residual cannot be evaluated at the initial guess (e.g. the predictor inverts an
-   * element), Newton restarts from `safe_increment` (typically u_n - u~, i.e. from the last
-   * converged configuration). Throws SolverFailure if Newton does not converge within the iteration
-   * limit or the linear solver fails.
+   * Unless the initial guess is already the answer, Newton iterates from `restart_increment`
+   * instead (u_n - u~, i.e. from the last converged configuration; see the class documentation).
+   * Throws SolverFailure if Newton does not converge within the iteration limit or the linear
+   * solver fails.
    */
   Report solve(const Vector<double>& predictor,
                double inertia_factor,
                const Vector<double>& external_force,
-               const Vector<double>& safe_increment,
+               const Vector<double>& restart_increment,
                Vector<double>& increment);
 
   /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */

@@ -45,13 +45,15 @@ public:
   {
     Point<dim> position; ///< current position of the pair's node on body A
     double gap;
-    double pressure; ///< multiplier / contact area, zero if inactive
+    double multiplier; ///< the pair's nodal contact force (compression positive), zero if inactive
+    double pressure;   ///< consistent contact pressure, see NodeToNodeContact::contact_pressures()
     bool active;
   };
 
   /**
    * Writes `contact_pressure_t<time>.csv`: per candidate pair the current coordinates of its
-   * body-A node, the gap, the contact pressure and whether it is active.
+   * body-A node, the gap, the multiplier (nodal force), the contact pressure and whether it is
+   * active.
    */
   void write_contact_pressure(double time, const std::vector<PressureSample>& samples) const;
 

@@ -1,0 +1,69 @@
+#!/usr/bin/env bash
+# Convergence of the rho = 0.001 two-sphere impact (prm/spheres_rho0.001.prm) against Hertz:
+# the three meshes of the family (Refinement 0, 1, 2 = coarse, medium, fine) x two time steps
+# (0.0025, the paper's, and 0.00125) x two materials (neo-Hookean finite strain, small-strain
+# linear elastic), two runs at a time on one rank each, from one Release build.
+# Writes bench/results/sphere_convergence.csv (peak force, duration, impulse and ringing with their
+# relative differences from Hertz, wall time) and prints it. The fine-mesh runs dominate: about
+# 40 minutes in all on a 2-core machine. Extra arguments go to every run.
+#   bench/sphere_convergence.sh
+set -euo pipefail
+cd "$(dirname "$0")/.."
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
+cmake --build build -j2 --target dyncontact >/dev/null
+results=bench/results/sphere_convergence
+mkdir -p "$results"
+
+run_case() # refinement time_step material extra-arguments...
+{
+  local refinement=$1 time_step=$2 material=$3
+  shift 3
+  local output="$results/r${refinement}_dt${time_step}_${material// /_}"
+  local start end
+  start=$(date +%s.%N)
+  if ! build/dyncontact prm/spheres_rho0.001.prm --output "$output" \
+    --set "Mesh/geo parameters=Refinement: $refinement, PoleGrading: 10, CoreOffset: 0.3" \
+    --set "Time integration/time step=$time_step" \
+    --set "Bodies/Body 1/material=$material" --set "Bodies/Body 2/material=$material" \
+    --set "Output/vtu interval=0" "$@" >"$output.log" 2>&1; then
+    echo "run failed, see $output.log" >&2
+    return 1
+  fi
+  end=$(date +%s.%N)
+  echo "$end - $start" | bc >"$output/wall_seconds"
+}
+export -f run_case
+export results
+
+cases=()
+for refinement in 0 1 2; do
+  for time_step in 0.0025 0.00125; do
+    for material in neo-hookean "linear elastic"; do
+      cases+=("$refinement|$time_step|$material")
+    done
+  done
+done
+# The longest (fine-mesh) runs first, so that the two slots stay busy to the end.
+printf '%s\n' "${cases[@]}" | sort -r |
+  xargs -P 2 -I{} bash -c 'IFS="|" read -r r dt m <<<"{}"; run_case "$r" "$dt" "$m" "$@"' _ "$@"
+
+table=bench/results/sphere_convergence.csv
+/usr/bin/python3 - "$results" >"$table" <<'PY'
+import csv, glob, os, sys
+print("refinement,time_step,material,peak_force,peak_rel,duration,duration_rel,impulse,impulse_rel,"
+      "ringing,wall_seconds")
+for directory in sorted(glob.glob(sys.argv[1] + '/r*_dt*')):
+    if not os.path.isdir(directory):
+        continue
+    name = os.path.basename(directory)
+    refinement, time_step, material = name.split('_', 2)
+    summary = {row['quantity']: row for row in csv.DictReader(open(directory + '/impact_summary.csv'))}
+    values = []
+    for quantity in ('peak_force', 'duration', 'impulse'):
+        values += [float(summary[quantity]['computed']), float(summary[quantity]['relative_difference'])]
+    seconds = float(open(directory + '/wall_seconds').read())
+    print(f"{refinement[1:]},{time_step[2:]},{material.replace('_', ' ')},{values[0]:.4f},{values[1]:+.4%},"
+          f"{values[2]:.5f},{values[3]:+.4%},{values[4]:.5f},{values[5]:+.4%},"
+          f"{float(summary['ringing']['computed']):.5f},{seconds:.0f}")
+PY
+column -s, -t "$table"
