@@ -175,9 +175,12 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
     else if (active[k] && multiplier_values[k] < -force_tolerance)
       tensile_pairs.push_back(k);
   // On a surface, a tensile nodal force inside compressed surroundings (the zero-area axis node of
-  // an axisymmetric Q2 surface) is not a tensile traction: such a pair stays closed.
+  // an axisymmetric Q2 surface) is not a tensile traction: such a pair stays closed. Not so for a
+  // penalty, whose tensile force means an open gap: keeping that pair would glue it.
+  const bool check_pressure =
+      !tensile_pairs.empty() && formulation == ContactFormulation::lagrange_multiplier;
   const std::vector<double> pressures =
-      tensile_pairs.empty() ? std::vector<double>() : contact_pressures(displacement);
+      check_pressure ? contact_pressures(displacement) : std::vector<double>();
   for (const unsigned int k : tensile_pairs)
     if (pressures.empty() || pressures[k] < 0.)
     {

@@ -101,20 +101,15 @@ std::vector<Tensor<1, dim>> ContactSurface<dim>::normals(const Vector<double>& d
 }
 
 template <int dim>
-std::vector<double> ContactSurface<dim>::tributary_areas(const Vector<double>& displacement) const
+std::vector<double> ContactSurface<dim>::lumped_areas(const Vector<double>& displacement) const
 {
-  const MappingQEulerian<dim, Vector<double>> current_mapping(
-      dof_handler.get_fe().degree, dof_handler, displacement);
-  std::vector<double> areas(surface_nodes.size(), 0.);
-  integrate_over_faces(current_mapping,
-                       [&areas](const auto& face_nodes,
-                                const FEFaceValues<dim>& values,
-                                const unsigned int q,
-                                const double measure)
-                       {
-                         for (const auto& [local_dof, node] : face_nodes)
-                           areas[node] += values.shape_value_component(local_dof, q, 0) * measure;
-                       });
+  const Eigen::MatrixXd mass = mass_matrix(displacement);
+  // The shape functions sum to one, so the row sums of the mass matrix are the consistent nodal
+  // areas, and their sum is the surface's area.
+  const double scale = mass.sum() / mass.diagonal().sum();
+  std::vector<double> areas(surface_nodes.size());
+  for (unsigned int node = 0; node < areas.size(); ++node)
+    areas[node] = scale * mass(node, node);
   return areas;
 }
 

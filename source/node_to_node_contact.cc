@@ -31,8 +31,8 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
   const Vector<double> undeformed(this->surface_a.n_dofs());
   const auto normals_a     = this->surface_a.normals(undeformed);
   const auto normals_b     = this->surface_b.normals(undeformed);
-  const auto areas_a       = this->surface_a.tributary_areas(undeformed);
-  const auto areas_b       = this->surface_b.tributary_areas(undeformed);
+  const auto areas_a       = this->surface_a.lumped_areas(undeformed);
+  const auto areas_b       = this->surface_b.lumped_areas(undeformed);
   const auto across_offset = [&approach](const Tensor<1, dim>& offset)
   { return (offset - (offset * approach) * approach).norm(); };
 

@@ -96,7 +96,8 @@ public:
   /**
    * Updates the active set at displacement u: inactive pairs with g < -gap_tolerance enter,
    * active pairs with lambda < -force_tolerance leave (their multiplier is reset to zero), except,
-   * for surface pairs, those whose contact pressure (contact_pressures()) is still compressive:
+   * for surface pairs with Lagrange multipliers, those whose contact pressure (contact_pressures())
+   * is still compressive:
    * a node whose consistent share of a compressive pressure is zero or negative (the axis node of
    * an axisymmetric Q2 surface has zero tributary area) may carry a slightly tensile multiplier
    * while its surroundings are pressed together. Returns whether anything changed.

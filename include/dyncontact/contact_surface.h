@@ -20,10 +20,11 @@ namespace dyncontact
  * mid-side nodes. For a displacement u it gives, in the current configuration x = X + u,
  *  - the outward unit normal at every node: the normals of the faces sharing the node, evaluated
  *    at the node on the deformed (isoparametric) faces, averaged and normalized;
- *  - the tributary area of every node: the integral over the deformed faces of the node's face
- *    shape function times the kinematics' measure factor (2 pi r for axisymmetry), so that a
- *    uniform pressure p is equivalent to the nodal forces p * area. It is the row sum of the face
- *    mass matrix and positive for Q1 and Q2 faces (1/6, 2/3, 1/6 of a straight Q2 edge).
+ *  - the consistent surface mass matrix, the integrals over the deformed faces of products of face
+ *    shape functions times the kinematics' measure factor (2 pi r for axisymmetry), which turns
+ *    nodal forces into a pressure field;
+ *  - a positive lumped area of every node, the mass matrix's diagonal scaled to the surface's
+ *    area, which sizes penalty springs.
  *
  * The geometry comes from an isoparametric Euler mapping of the element's own degree, so the faces
  * are the curves (surfaces) the finite element displacement makes of them. The class holds no
@@ -55,8 +56,14 @@ public:
    */
   std::vector<Tensor<1, dim>> normals(const Vector<double>& displacement) const;
 
-  /** Tributary areas at `displacement`, one per node of nodes(). */
-  std::vector<double> tributary_areas(const Vector<double>& displacement) const;
+  /**
+   * Lumped nodal areas at `displacement`, one per node of nodes(): the diagonal of mass_matrix()
+   * scaled to sum to the surface's area (HRZ lumping). Positive at every node, unlike the
+   * consistent areas (the integrals of the shape functions), which vanish at the Q2 vertex on the
+   * axis of an axisymmetric surface (the integral of its shape function times 2 pi r). On straight
+   * faces of a plane surface the two coincide.
+   */
+  std::vector<double> lumped_areas(const Vector<double>& displacement) const;
 
   /**
    * The consistent surface mass matrix M_ij = integral of N_i N_j times the measure factor over

@@ -29,9 +29,9 @@ namespace dyncontact
  * a pair is taken with the normal held fixed over a Newton update (the variation of n is not
  * linearized): that term is proportional to the separation of the two nodes across n, which
  * vanishes for a closed pair of matching nodes, so Newton keeps its quadratic rate as the pairs
- * close. Contact area of a pair: the mean of its two nodes' tributary areas (2 pi r weighted in
- * axisymmetry); it scales the penalty stiffness. The contact pressure comes from a consistent
- * recovery instead (contact_pressures()).
+ * close. Contact area of a pair: the mean of its two nodes' lumped areas
+ * (ContactSurface::lumped_areas(), 2 pi r weighted in axisymmetry); it scales the penalty
+ * stiffness. The contact pressure comes from a consistent recovery instead (contact_pressures()).
  *
  * It is not a general contact search: no sliding beyond the matched partner, no segment
  * projection, no self contact.
