@@ -45,9 +45,13 @@ for refinement in ${REFINEMENTS:-0 1 2}; do
     done
   done
 done
-# The longest (fine-mesh) runs first, so that the two slots stay busy to the end.
-printf '%s\n' "${cases[@]}" | sort -r |
-  xargs -P 2 -I{} bash -c 'IFS="|" read -r r dt m <<<"{}"; run_case "$r" "$dt" "$m" "$@"' _ "$@"
+# The longest runs (finest mesh, then smallest time step) first, so that the two slots stay busy
+# to the end. A failed run is reported and left out of the table; the script then exits with 1.
+all_succeeded=true
+printf '%s\n' "${cases[@]}" | LC_ALL=C sort -t'|' -k1,1nr -k2,2n |
+  xargs -d '\n' -P 2 -I{} bash -c \
+    'IFS="|" read -r r dt m <<<"$1"; shift; run_case "$r" "$dt" "$m" "$@"' _ {} "$@" ||
+  all_succeeded=false
 
 table=bench/results/sphere_convergence.csv
 /usr/bin/python3 - "$results" >"$table" <<'PY'
@@ -57,6 +61,9 @@ print("refinement,time_step,material,peak_force,peak_rel,duration,duration_rel,i
 for directory in sorted(glob.glob(sys.argv[1] + '/r*_dt*')):
     if not os.path.isdir(directory):
         continue
+    if not all(os.path.exists(os.path.join(directory, name))
+               for name in ('wall_seconds', 'impact_summary.csv')):
+        continue  # a failed or unfinished run
     name = os.path.basename(directory)
     refinement, time_step, material = name.split('_', 2)
     summary = {row['quantity']: row for row in csv.DictReader(open(directory + '/impact_summary.csv'))}
@@ -69,3 +76,4 @@ for directory in sorted(glob.glob(sys.argv[1] + '/r*_dt*')):
           f"{float(summary['ringing']['computed']):.5f},{seconds:.0f}")
 PY
 column -s, -t "$table"
+$all_succeeded

@@ -182,7 +182,7 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
   const std::vector<double> pressures =
       check_pressure ? contact_pressures(displacement) : std::vector<double>();
   for (const unsigned int k : tensile_pairs)
-    if (pressures.empty() || pressures[k] < 0.)
+    if (pressures.empty() || !(pressures[k] > 0.)) // a zero or undefined pressure releases too
     {
       active[k]            = false;
       multiplier_values[k] = 0.;

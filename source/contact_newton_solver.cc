@@ -263,7 +263,8 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
                                                       : evaluation_failure) +
                           (before_update ? " (the line search halved the last Newton update " +
                                                std::to_string(max_backtracks) + " times)"
-                                         : " (at the initial guess)"));
+                           : restarted ? " (at the last converged configuration)"
+                                       : " (at the initial guess)"));
     if (linear_solves == parameters.max_iterations)
     {
       std::ostringstream message;
