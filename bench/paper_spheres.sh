@@ -4,11 +4,7 @@
 # one Release build. Extra arguments go to every run (e.g. --set "Mesh/geo parameters=...").
 # Writes bench/results/paper_spheres.csv and prints it. Run on an otherwise idle machine.
 #   bench/paper_spheres.sh
-set -euo pipefail
-cd "$(dirname "$0")/.."
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j2 --target dyncontact >/dev/null
+source "$(dirname "$0")/common.sh"
 mkdir -p bench/results
 table=bench/results/paper_spheres.csv
 echo "case,ranks,wall_seconds,dofs,steps,linear_solves,steps_in_contact,solves_per_contact_step" >"$table"

@@ -9,10 +9,7 @@
 # every run; REFINEMENTS and TIME_STEPS choose other sets of runs.
 #   bench/sphere_convergence.sh
 #   REFINEMENTS=3 TIME_STEPS=0.0025 bench/sphere_convergence.sh   # the extra-fine mesh, ~40 min
-set -euo pipefail
-cd "$(dirname "$0")/.."
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
-cmake --build build -j2 --target dyncontact >/dev/null
+source "$(dirname "$0")/common.sh"
 results=bench/results/sphere_convergence
 mkdir -p "$results"
 
