@@ -1,7 +1,39 @@
-# Sourced by every bench/*.sh script: strict mode, the repository root as working directory, Open
-# MPI allowed to run as root, and a Release build of dyncontact (the only build to time).
-set -euo pipefail
+# shellcheck shell=bash
+# Sourced by every bench/*.sh script (after its own `set -euo pipefail`): the repository root as
+# working directory, Open MPI allowed to run as root, a Release build of dyncontact (the only build
+# to time), and the helpers below. Run one bench script at a time: each one rebuilds build/, and
+# two at once would race on it or time a binary relinked under them.
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null
 cmake --build build -j2 --target dyncontact >/dev/null
+
+# One two-sphere impact run of build/dyncontact on one rank into a fresh output directory (results
+# of an earlier run there are removed first, so that a failed run leaves nothing to tabulate): the
+# graded mesh family at the given refinement, the given material for both bodies, no VTU. Extra
+# arguments go to dyncontact. The log goes to output.log; a failure is reported, with status 1.
+run_sphere_impact() # output prm refinement material extra-arguments...
+{
+  local output=$1 prm=$2 refinement=$3 material=$4
+  shift 4
+  rm -rf "$output" "$output.log"
+  if ! build/dyncontact "$prm" --output "$output" \
+    --set "Mesh/geo parameters=Refinement: $refinement, PoleGrading: 10, CoreOffset: 0.3" \
+    --set "Bodies/Body 1/material=$material" --set "Bodies/Body 2/material=$material" \
+    --set "Output/vtu interval=0" "$@" >"$output.log" 2>&1; then
+    echo "run failed, see $output.log" >&2
+    return 1
+  fi
+}
+export -f run_sphere_impact
+
+# Runs `function fields... extra-arguments...` for every line of standard input, two at a time;
+# a line holds the fields separated by '|'. The function must be exported (export -f). Fails if
+# any call failed, after all of them have run.
+run_two_at_a_time() # function extra-arguments...
+{
+  local function=$1
+  shift
+  xargs -d '\n' -P 2 -I{} bash -c \
+    'IFS="|" read -r -a fields <<<"$1"; shift; "$0" "${fields[@]}" "$@"' "$function" {} "$@"
+}

@@ -4,6 +4,7 @@
 # one Release build. Extra arguments go to every run (e.g. --set "Mesh/geo parameters=...").
 # Writes bench/results/paper_spheres.csv and prints it. Run on an otherwise idle machine.
 #   bench/paper_spheres.sh
+set -euo pipefail
 source "$(dirname "$0")/common.sh"
 mkdir -p bench/results
 table=bench/results/paper_spheres.csv

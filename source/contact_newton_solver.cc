@@ -258,13 +258,13 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
           displacement, gap_tolerance, parameters.residual_tolerance * force_scale);
       continue;
     }
+    // Here Newton has restarted (or taken an update): a failure without an update is one at u_n.
     if (!evaluation_failure.empty() || !std::isfinite(residual_norm))
       throw SolverFailure((evaluation_failure.empty() ? std::string("the residual is not finite")
                                                       : evaluation_failure) +
                           (before_update ? " (the line search halved the last Newton update " +
                                                std::to_string(max_backtracks) + " times)"
-                           : restarted ? " (at the last converged configuration)"
-                                       : " (at the initial guess)"));
+                                         : " (at the last converged configuration)"));
     if (linear_solves == parameters.max_iterations)
     {
       std::ostringstream message;

@@ -28,8 +28,8 @@ class NodeToNodeContact;
  * active pairs; the penalty formulation is the same system with -1/eps on the multiplier
  * diagonal (lambda = -eps g, i.e. the classical penalty force eps <-g>). Active set: a pair enters
  * when it penetrates and leaves when its multiplier turns tensile (Hughes et al. 1976) and, on a
- * surface with Lagrange multipliers, so does the contact pressure at its node (see
- * update_active_set()).
+ * surface with Lagrange multipliers, the contact pressure at its node is not compressive either
+ * (see update_active_set()).
  *
  * Normals are fixed unless the pairs come from a NodeToNodeContact: then update_geometry() moves
  * them to the current configuration (call it whenever the displacement changes).

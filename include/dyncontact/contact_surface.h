@@ -61,7 +61,7 @@ public:
    * scaled by one global factor so that they sum to the surface's area. Positive at every node,
    * unlike the consistent areas (the integrals of the shape functions), which vanish at the Q2
    * vertex on the axis of an axisymmetric surface (the integral of its shape function times 2 pi
-   * r). On straight faces of a plane surface the two coincide.
+   * r). On straight faces in plane (not axisymmetric) kinematics the two coincide.
    */
   std::vector<double> lumped_areas(const Vector<double>& displacement) const;
 
