@@ -9,6 +9,12 @@ Newmark::Newmark(const TimeIntegrationParameters& parameters)
   Assert(beta_value > 0., ExcMessage("beta > 0 is checked when the parameters are read."));
 }
 
+void Newmark::set_time_step(const double time_step)
+{
+  Assert(time_step > 0., ExcMessage("The time step must be positive."));
+  dt = time_step;
+}
+
 void Newmark::predict(const Vector<double>& u_n,
                       const Vector<double>& v_n,
                       const Vector<double>& a_n,
@@ -34,8 +40,9 @@ double Newmark::algorithmic_energy(const double kinetic_energy,
                                    const double strain_energy,
                                    const double acceleration_energy) const
 {
-  // acceleration_energy = 1/2 a.Ma, so (beta - 1/4) dt^2/2 a.Ma = (beta - 1/4) dt^2
+  // acceleration_energy = 1/2 a.Ma, so (beta - gamma/2) dt^2/2 a.Ma = (beta - gamma/2) dt^2
   // acceleration_energy.
-  return kinetic_energy + strain_energy + (beta_value - 0.25) * dt * dt * acceleration_energy;
+  return kinetic_energy + strain_energy +
+         (beta_value - 0.5 * gamma_value) * dt * dt * acceleration_energy;
 }
 } // namespace dyncontact

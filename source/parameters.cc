@@ -146,6 +146,7 @@ void declare_all(ParameterHandler& prm, const std::optional<ProblemSize>& size)
   TimeIntegrationParameters::declare_parameters(prm);
   ContactParameters::declare_parameters(prm);
   NewtonParameters::declare_parameters(prm);
+  GuardParameters::declare_parameters(prm);
   if (!size || size->geometry == GeometryKind::bars)
     GeometryParameters::declare_parameters(prm, size ? size->n_bars : 1);
   if (!size || size->geometry != GeometryKind::bars)
@@ -329,6 +330,14 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
                     Patterns::Double(0.),
                     "Time step dt [time], > 0. The Courant number c dt / h is printed at start.");
   prm.declare_entry("end time", "30", Patterns::Double(0.), "End of the run [time], > 0.");
+  prm.declare_entry("maximum step cuts",
+                    "10",
+                    Patterns::Integer(0, 20),
+                    "Step control [-], 0..20: a step that fails (Newton does not converge, an "
+                    "element inverts, or a guard of subsection Guards trips) is retried with half "
+                    "the size, at most this many times, i.e. down to time step / 2^cuts; the size "
+                    "grows back after two accepted sub-steps. If the smallest step still fails the "
+                    "run stops (exit 3) keeping its output. 0 = never cut.");
   prm.leave_subsection();
 }
 
@@ -348,6 +357,7 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
     throw InputError("Time integration/end time = " + prm.get("end time") +
                      " with time step = " + prm.get("time step") +
                      " asks for more than 1e8 steps; at most 1e8 are allowed.");
+  max_step_cuts = prm.get_integer("maximum step cuts");
   prm.leave_subsection();
 }
 
@@ -409,6 +419,54 @@ void NewtonParameters::parse_parameters(ParameterHandler& prm)
   prm.enter_subsection("Newton");
   max_iterations     = prm.get_integer("maximum iterations");
   residual_tolerance = prm.get_double("residual tolerance");
+  prm.leave_subsection();
+}
+
+void GuardParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Guards");
+  prm.declare_entry("energy",
+                    "true",
+                    Patterns::Bool(),
+                    "Reject a step whose algorithmic energy exceeds the initial energy plus the "
+                    "work of the external forces (frictionless elastic contact cannot gain "
+                    "energy). A rejected step is cut (Time integration/maximum step cuts).");
+  prm.declare_entry("energy tolerance",
+                    "1e-4",
+                    Patterns::Double(0., 1.),
+                    "Allowed energy gain, relative to the largest energy of the run [-], 0..1.");
+  prm.declare_entry("tensile force",
+                    "true",
+                    Patterns::Bool(),
+                    "Reject a step whose recovered total contact force is tensile.");
+  prm.declare_entry("tensile force tolerance",
+                    "1e-4",
+                    Patterns::Double(0., 1.),
+                    "Allowed tension, relative to the largest contact force of the run (or the sum "
+                    "of the step's |multipliers|) [-], 0..1.");
+  prm.declare_entry("momentum",
+                    "true",
+                    Patterns::Bool(),
+                    "Reject a step after which a body's momentum change (along the impact "
+                    "direction) differs from the impulse it received from the contact and the "
+                    "external forces.");
+  prm.declare_entry("momentum tolerance",
+                    "1e-6",
+                    Patterns::Double(0., 1.),
+                    "Allowed difference, relative to the largest total momentum of the run "
+                    "[-], 0..1.");
+  prm.leave_subsection();
+}
+
+void GuardParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Guards");
+  energy                  = prm.get_bool("energy");
+  energy_tolerance        = prm.get_double("energy tolerance");
+  tensile_force           = prm.get_bool("tensile force");
+  tensile_force_tolerance = prm.get_double("tensile force tolerance");
+  momentum                = prm.get_bool("momentum");
+  momentum_tolerance      = prm.get_double("momentum tolerance");
   prm.leave_subsection();
 }
 
@@ -612,6 +670,7 @@ ParameterReader::ParameterReader(const std::string& filename,
     run_parameters.time.parse_parameters(prm);
     run_parameters.contact.parse_parameters(prm);
     run_parameters.newton.parse_parameters(prm);
+    run_parameters.guards.parse_parameters(prm);
     if (size.geometry == GeometryKind::bars)
       run_parameters.geometry.parse_parameters(prm);
     else

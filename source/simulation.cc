@@ -1,15 +1,24 @@
 #include <dyncontact/simulation.h>
+#include <dyncontact/step_controller.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 
 namespace dyncontact
 {
+namespace
+{
+/// Wall-clock seconds between two progress lines (active-set changes are reported at once).
+constexpr double progress_interval = 3.;
+} // namespace
+
 template <int dim>
 Simulation<dim>::Simulation(const RunParameters& parameters,
                             std::unique_ptr<ProblemModel<dim>> model,
@@ -18,7 +27,8 @@ Simulation<dim>::Simulation(const RunParameters& parameters,
       is_root_rank(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0), log(log, is_root_rank),
       newmark(parameters.time), triangulation(MPI_COMM_WORLD),
       fe(FE_Q<dim>(this->model->element_degree()), dim), mapping(this->model->element_degree()),
-      n_steps(0), time(0.), step_history(history_columns())
+      n_steps(0), time(0.), guards(parameters.guards), step_history(history_columns()),
+      timer(this->log, TimerOutput::never, TimerOutput::wall_times)
 {
 }
 
@@ -35,12 +45,14 @@ std::vector<std::string> Simulation<dim>::history_columns() const
                                       "total_energy",
                                       "algorithmic_energy",
                                       "max_penetration",
-                                      "force_imbalance"};
+                                      "force_imbalance",
+                                      "time_step",
+                                      "step_cuts"};
   if (dim > 1)
     for (const std::string column : {"contact_radius", "centre_pressure"})
       columns.push_back(column);
   for (unsigned int b = 1; b <= model->n_bodies(); ++b)
-    for (const std::string quantity : {"momentum_", "u_tip_", "v_tip_", "a_tip_"})
+    for (const std::string quantity : {"momentum_", "impulse_", "u_tip_", "v_tip_", "a_tip_"})
       columns.push_back(quantity + std::to_string(b));
   return columns;
 }
@@ -74,8 +86,26 @@ void Simulation<dim>::setup()
                                                  mass,
                                                  fixed_dofs,
                                                  parameters.newton,
-                                                 GridTools::minimal_cell_diameter(triangulation));
-  monitors = model->monitor_nodes(*nodes);
+                                                 GridTools::minimal_cell_diameter(triangulation),
+                                                 timer);
+  monitors                       = model->monitor_nodes(*nodes);
+  const Tensor<1, dim> direction = model->impact_direction();
+  dof_body.assign(dof_handler.n_dofs(), 0);
+  dof_direction.assign(dof_handler.n_dofs(), 0.);
+  is_contact_dof.assign(dof_handler.n_dofs(), false);
+  for (const auto& node : nodes->nodes())
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      dof_body[node.dofs[d]]      = node.body;
+      dof_direction[node.dofs[d]] = direction[d];
+    }
+  for (const auto& pair : contact->candidate_pairs())
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      is_contact_dof[pair.node_a.dofs[d]] = true;
+      if (!pair.against_wall())
+        is_contact_dof[pair.node_b->dofs[d]] = true;
+    }
   // The pair nearest to the axis (axisymmetry: r = 0), whose pressure is centre_pressure.
   const auto& pairs = contact->candidate_pairs();
   innermost_pair    = std::min_element(pairs.begin(),
@@ -160,7 +190,6 @@ void Simulation<dim>::set_initial_conditions()
       velocity[node.dofs[d]] = v0[d];
   }
   // Initial acceleration from equilibrium, M a_0 = W(0) - Q(u_0) (no contact at t = 0).
-  Vector<double> internal_force;
   bodies->assemble_internal_force(displacement, internal_force, nullptr);
   external_force = loads->force(0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
@@ -168,13 +197,83 @@ void Simulation<dim>::set_initial_conditions()
   for (const auto dof : fixed_dofs)
     velocity[dof] = acceleration[dof] = 0.;
   contact->update_geometry(displacement);
+  forces_on_bodies = body_forces();
+  impulses.assign(model->n_bodies(), 0.);
+  external_work = 0.;
 }
 
 template <int dim>
-unsigned int Simulation<dim>::do_time_step()
+typename Simulation<dim>::State Simulation<dim>::current_state() const
 {
-  const Vector<double> old_displacement = displacement, old_velocity = velocity,
-                       old_acceleration = acceleration;
+  return {displacement,
+          velocity,
+          acceleration,
+          internal_force,
+          external_force,
+          contact->state(),
+          forces_on_bodies,
+          impulses,
+          external_work};
+}
+
+template <int dim>
+void Simulation<dim>::restore(const State& state)
+{
+  displacement     = state.displacement;
+  velocity         = state.velocity;
+  acceleration     = state.acceleration;
+  internal_force   = state.internal_force;
+  external_force   = state.external_force;
+  forces_on_bodies = state.body_forces;
+  impulses         = state.impulses;
+  external_work    = state.external_work;
+  contact->restore(state.contact);
+  contact->update_geometry(displacement);
+}
+
+template <int dim>
+std::vector<double> Simulation<dim>::body_forces() const
+{
+  std::vector<double> forces(model->n_bodies(), 0.);
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+  {
+    double force = external_force[i];
+    if (is_contact_dof[i])
+      force += mass[i] * acceleration[i] + internal_force[i] - external_force[i];
+    forces[dof_body[i]] += dof_direction[i] * force;
+  }
+  return forces;
+}
+
+template <int dim>
+void Simulation<dim>::accumulate_impulses(const State& before)
+{
+  const double dt                  = newmark.time_step();
+  const double gamma               = newmark.gamma();
+  const std::vector<double> forces = body_forces();
+  for (unsigned int b = 0; b < forces.size(); ++b)
+    impulses[b] += dt * ((1. - gamma) * before.body_forces[b] + gamma * forces[b]);
+  // The modified scheme's velocity correction is an impulse of its own (the paper's lambda_v):
+  // the part of M (v_{n+1} - v_n) that the Newmark update of the accelerations does not explain.
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    if (is_contact_dof[i])
+      impulses[dof_body[i]] +=
+          dof_direction[i] * mass[i] *
+          (velocity[i] - before.velocity[i] -
+           dt * ((1. - gamma) * before.acceleration[i] + gamma * acceleration[i]));
+  forces_on_bodies = forces;
+  // Work of the external forces, trapezoidal: (W_n + W_{n+1}) / 2 . (u_{n+1} - u_n).
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    external_work += 0.5 * (before.external_force[i] + external_force[i]) *
+                     (displacement[i] - before.displacement[i]);
+}
+
+template <int dim>
+unsigned int Simulation<dim>::do_time_step(const State& before)
+{
+  const Vector<double>& old_displacement = before.displacement;
+  const Vector<double>& old_velocity     = before.velocity;
+  const Vector<double>& old_acceleration = before.acceleration;
   Vector<double> predictor, increment(dof_handler.n_dofs());
   newmark.predict(old_displacement, old_velocity, old_acceleration, predictor);
   Vector<double> last_configuration = old_displacement; // as an increment over the predictor
@@ -184,6 +283,7 @@ unsigned int Simulation<dim>::do_time_step()
       predictor, newmark.inertia_factor(), external_force, last_configuration, increment);
   displacement = predictor;
   displacement += increment;
+  internal_force = solver->internal_force();
   newmark.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
   if (newmark.scheme() == NewmarkScheme::modified)
     contact->apply_rate_correction(
@@ -192,13 +292,14 @@ unsigned int Simulation<dim>::do_time_step()
         {old_displacement, old_velocity, old_acceleration, displacement, increment},
         velocity,
         acceleration);
+  accumulate_impulses(before);
   return report.linear_solves;
 }
 
 template <int dim>
 Vector<double> Simulation<dim>::net_internal_force() const
 {
-  Vector<double> net = solver->internal_force();
+  Vector<double> net = internal_force;
   net -= external_force;
   return net;
 }
@@ -233,37 +334,68 @@ void Simulation<dim>::write_contact_pressure(const std::vector<double>& pressure
 }
 
 template <int dim>
-void Simulation<dim>::record_step(const unsigned int step, const unsigned int linear_solves)
+typename Simulation<dim>::Measures Simulation<dim>::measure() const
 {
-  double kinetic = 0., acceleration_energy = 0.;
+  Measures measures{};
+  double acceleration_energy = 0.;
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
-    kinetic += 0.5 * mass[i] * velocity[i] * velocity[i];
+    measures.kinetic_energy += 0.5 * mass[i] * velocity[i] * velocity[i];
     acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
   }
   // After a step the solver's last evaluation was at this displacement: reuse its pass.
-  const double strain  = step == 0 ? bodies->strain_energy(displacement) : solver->strain_energy();
-  double contact_force = 0., force_imbalance = 0.;
-  if (step > 0)
+  measures.strain_energy =
+      step_history.n_rows() == 0 ? bodies->strain_energy(displacement) : solver->strain_energy();
+  measures.algorithmic_energy = newmark.algorithmic_energy(
+      measures.kinetic_energy, measures.strain_energy, acceleration_energy);
+  if (step_history.n_rows() > 0)
   {
     const Vector<double> net_force = net_internal_force();
-    contact_force          = contact->recovered_contact_force(mass, acceleration, net_force);
-    const auto side_forces = contact->recovered_side_forces(mass, acceleration, net_force);
-    force_imbalance        = side_forces.on_a - side_forces.on_b;
+    measures.contact_force   = contact->recovered_contact_force(mass, acceleration, net_force);
+    const auto side_forces   = contact->recovered_side_forces(mass, acceleration, net_force);
+    measures.force_imbalance = side_forces.on_a - side_forces.on_b;
   }
+  measures.momenta.assign(model->n_bodies(), 0.);
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    measures.momenta[dof_body[i]] += mass[i] * dof_direction[i] * velocity[i];
+  return measures;
+}
 
+template <int dim>
+StepGuards::Figures Simulation<dim>::guard_figures(const Measures& measures) const
+{
+  double multiplier_magnitude = 0.;
+  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
+    multiplier_magnitude += std::abs(contact->active_multiplier(k));
+  return {time,
+          measures.algorithmic_energy,
+          external_work,
+          measures.contact_force,
+          multiplier_magnitude,
+          measures.momenta,
+          impulses};
+}
+
+template <int dim>
+void Simulation<dim>::record_step(const Measures& measures,
+                                  const unsigned int nominal_step,
+                                  const unsigned int linear_solves,
+                                  const unsigned int cuts)
+{
   std::vector<double> row = {time,
-                             contact_force,
+                             measures.contact_force,
                              contact->total_multiplier(),
                              static_cast<double>(contact->n_active()),
                              static_cast<double>(linear_solves),
-                             kinetic,
-                             strain,
-                             kinetic + strain,
-                             newmark.algorithmic_energy(kinetic, strain, acceleration_energy),
+                             measures.kinetic_energy,
+                             measures.strain_energy,
+                             measures.kinetic_energy + measures.strain_energy,
+                             measures.algorithmic_energy,
                              contact->max_penetration(displacement),
-                             force_imbalance};
-  // Contact pressures (surface contact only): one dense solve per step, skipped without contact.
+                             measures.force_imbalance,
+                             step_history.n_rows() == 0 ? 0. : newmark.time_step(),
+                             static_cast<double>(cuts)};
+  // Contact pressures (surface contact only): one solve per step, skipped without contact.
   const std::vector<double> pressures = surface_contact && contact->n_active() > 0
                                             ? contact->contact_pressures(displacement)
                                             : std::vector<double>(contact->n_pairs(), 0.);
@@ -273,10 +405,6 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
     row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
   }
   const Tensor<1, dim> direction = model->impact_direction();
-  std::vector<double> momentum(monitors.size(), 0.);
-  for (const auto& node : nodes->nodes())
-    for (unsigned int d = 0; d < dim; ++d)
-      momentum[node.body] += mass[node.dofs[d]] * direction[d] * velocity[node.dofs[d]];
   for (unsigned int b = 0; b < monitors.size(); ++b)
   {
     double u_tip = 0., v_tip = 0., a_tip = 0.;
@@ -286,10 +414,16 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
       v_tip += direction[d] * velocity[monitors[b].dofs[d]];
       a_tip += direction[d] * acceleration[monitors[b].dofs[d]];
     }
-    row.insert(row.end(), {momentum[b], u_tip, v_tip, a_tip});
+    row.insert(row.end(), {measures.momenta[b], impulses[b], u_tip, v_tip, a_tip});
   }
   step_history.add_row(row);
+  if (step_history.n_rows() == 1 || nominal_step > 0)
+    nominal_rows.push_back(step_history.n_rows() - 1);
 
+  const unsigned int step = step_history.n_rows() == 1 ? 0 : nominal_step;
+  if (step_history.n_rows() > 1 && nominal_step == 0)
+    return; // profiles and fields on the nominal grid only
+  TimerOutput::Scope scope(timer, "output");
   if (parameters.output.vtu_interval > 0 && step % parameters.output.vtu_interval == 0)
   {
     const Vector<double> traction =
@@ -306,6 +440,27 @@ void Simulation<dim>::record_step(const unsigned int step, const unsigned int li
 }
 
 template <int dim>
+void Simulation<dim>::write_reference_and_summary()
+{
+  if (!is_root_rank)
+    return;
+  const std::string& directory = parameters.output.directory;
+  if (parameters.output.write_exact_solution)
+    model->write_reference(directory, step_history.column("time"), monitors);
+  // The impact measures need uniform samples: the rows on the nominal grid.
+  History nominal_history(step_history.column_names());
+  for (const unsigned int row : nominal_rows)
+  {
+    std::vector<double> values;
+    for (const auto& name : step_history.column_names())
+      values.push_back(step_history.value(row, name));
+    nominal_history.add_row(values);
+  }
+  if (nominal_history.n_rows() >= 3)
+    model->summarize_run(directory, nominal_history, log.get_stream());
+}
+
+template <int dim>
 void Simulation<dim>::run()
 {
   setup();
@@ -316,50 +471,115 @@ void Simulation<dim>::run()
     field_output->write_cell_outlines(nodes->nodes());
   if (is_root_rank)
     step_history.attach_file(directory + "/history.csv");
-  if (parameters.output.write_exact_solution && is_root_rank)
-  {
-    std::vector<double> times(n_steps + 1);
-    for (unsigned int step = 0; step <= n_steps; ++step)
-      times[step] = step * parameters.time.time_step;
-    model->write_reference(directory, times, monitors);
-  }
 
-  record_step(0, 0);
-  const unsigned int report_interval = std::max(1u, n_steps / 10);
-  unsigned int total_solves          = 0;
-  for (unsigned int step = 1; step <= n_steps; ++step)
+  const Measures initial = measure();
+  guards.initialize(guard_figures(initial));
+  record_step(initial, 0, 0, 0);
+
+  const double dt = parameters.time.time_step;
+  StepController controller(dt, n_steps, parameters.time.max_step_cuts);
+  unsigned int total_solves = 0, total_cuts = 0, steps_taken = 0;
+  std::vector<std::string> cut_places;
+  const auto wall_start = std::chrono::steady_clock::now();
+  auto last_progress    = wall_start;
+  while (!controller.finished())
   {
-    time                             = step * parameters.time.time_step;
-    const unsigned int active_before = contact->n_active();
-    unsigned int linear_solves       = 0;
-    try
+    const State before              = current_state();
+    const unsigned int nominal_step = controller.nominal_step();
+    unsigned int linear_solves = 0, cuts = 0;
+    std::string failure;
+    Measures measures;
+    for (;;)
     {
-      linear_solves = do_time_step();
+      newmark.set_time_step(controller.step_size());
+      time    = controller.end_time();
+      failure = "";
+      try
+      {
+        linear_solves += do_time_step(before);
+        measures                          = measure();
+        const StepGuards::Figures figures = guard_figures(measures);
+        failure                           = guards.check(figures);
+        if (failure.empty())
+        {
+          guards.accept(figures);
+          break;
+        }
+      }
+      catch (const SolverFailure& solver_failure)
+      {
+        failure = solver_failure.what();
+      }
+      restore(before);
+      while (!failure.empty() && (failure.back() == '.' || failure.back() == ' '))
+        failure.pop_back();
+      const double failed_size = controller.step_size();
+      if (!controller.cut())
+      {
+        write_reference_and_summary();
+        throw SolverFailure("step " + std::to_string(nominal_step) +
+                            " (t = " + format_number(time) + "): " + failure +
+                            ", still at the smallest step " + format_number(failed_size) +
+                            " (dt / 2^" + std::to_string(parameters.time.max_step_cuts) +
+                            ", Time integration/maximum step cuts). Results up to t = " +
+                            format_number(controller.start_time()) + " are in " + directory + ".");
+      }
+      ++cuts;
+      ++total_cuts;
+      if (cut_places.size() < 10)
+        cut_places.push_back(format_number(controller.start_time()));
+      log << "  step " << nominal_step << " (t = " << time << "): " << failure
+          << "; cutting the step to " << controller.step_size() << "\n";
     }
-    catch (const SolverFailure& failure)
-    {
-      throw SolverFailure("step " + std::to_string(step) + " (t = " + format_number(time) +
-                          "): " + failure.what() +
-                          " Results up to t = " + format_number(time - parameters.time.time_step) +
-                          " are in " + directory + ".");
-    }
+    const auto active_before =
+        std::count(before.contact.active.begin(), before.contact.active.end(), true);
+    const bool nominal_time_reached = controller.accept();
+    ++steps_taken;
     total_solves += linear_solves;
-    record_step(step, linear_solves);
-    if (!std::isfinite(step_history.value(step, "algorithmic_energy")))
-      throw SolverFailure("step " + std::to_string(step) + " (t = " + format_number(time) +
+    record_step(measures, nominal_time_reached ? nominal_step : 0, linear_solves, cuts);
+    if (!std::isfinite(step_history.value(step_history.n_rows() - 1, "algorithmic_energy")))
+    {
+      write_reference_and_summary();
+      throw SolverFailure("step " + std::to_string(nominal_step) + " (t = " + format_number(time) +
                           "): the solution is no longer finite; the time integration is unstable "
                           "(see the stability warning at start, if any). Results up to this step "
                           "are in " +
                           directory + ".");
-    if (step % report_interval == 0 || contact->n_active() != active_before)
-      log << "  step " << std::setw(6) << step << "  t = " << std::setw(10) << time
-          << "  active pairs " << contact->n_active() << "  linear solves " << linear_solves
-          << "  total energy " << step_history.value(step, "total_energy") << "\n";
+    }
+    const auto now              = std::chrono::steady_clock::now();
+    const double since_progress = std::chrono::duration<double>(now - last_progress).count();
+    if (static_cast<long>(contact->n_active()) != active_before ||
+        since_progress >= progress_interval || controller.finished())
+    {
+      last_progress        = now;
+      const double elapsed = std::chrono::duration<double>(now - wall_start).count();
+      const double done    = time / (n_steps * dt);
+      log << "  step " << std::setw(6) << nominal_step << "/" << n_steps
+          << "  t = " << std::setw(10) << time << "  " << std::fixed << std::setprecision(1)
+          << std::setw(5) << 100. * done << "%  " << std::setw(7)
+          << steps_taken / std::max(elapsed, 1e-9) << " steps/s  ETA " << std::setw(6)
+          << elapsed * (1. - done) / std::max(done, 1e-9) << " s  " << std::setprecision(2)
+          << static_cast<double>(total_solves) / steps_taken << " solves/step" << std::defaultfloat
+          << std::setprecision(6) << "  active pairs " << contact->n_active() << "  energy "
+          << step_history.value(step_history.n_rows() - 1, "algorithmic_energy") << "\n";
+    }
   }
-  if (is_root_rank)
-    model->summarize_run(directory, step_history, log.get_stream());
-  log << "dyncontact: done, " << n_steps << " steps, " << total_solves
-      << " linear solves. Results in " << directory << "\n";
+  write_reference_and_summary();
+  for (const auto& warning : guards.warnings())
+    log << warning << "\n";
+  const double wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  log << "dyncontact: done, " << n_steps << " steps (" << steps_taken << " taken, " << total_cuts
+      << " step cuts";
+  for (unsigned int c = 0; c < cut_places.size(); ++c)
+    log << (c == 0 ? " at t = " : ", ") << cut_places[c];
+  if (total_cuts > cut_places.size())
+    log << ", ...";
+  log << "), " << total_solves << " linear solves, wall time " << wall_time << " s (";
+  const auto phases = timer.get_summary_data(TimerOutput::total_wall_time);
+  for (auto phase = phases.begin(); phase != phases.end(); ++phase)
+    log << (phase == phases.begin() ? "" : ", ") << phase->first << " " << phase->second << " s";
+  log << "). Results in " << directory << "\n";
 }
 
 template class Simulation<1>;

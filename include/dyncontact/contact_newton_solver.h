@@ -6,6 +6,7 @@
 #include <dyncontact/parameters.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -21,10 +22,13 @@ namespace dyncontact
  *   c M (u - u~) + Q(u) - W - G^T lambda = 0,  and the constraint rows of ContactConstraints,
  * with c = 1/(beta dt^2) and u = u~ + increment, by Newton's method on the symmetric saddle-point
  * system [K_eff, -G^T; -G, -D]. The active set is updated after every linear solve (a semi-smooth
- * Newton); the step has converged when the residual is below the tolerance times the size of the
- * force terms (inertia, internal, contact, and max diag(K_eff) |u|, the round-off scale of K u),
- * the active constraints hold to the gap tolerance, and the last update left the active set
- * unchanged. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
+ * Newton); the step has converged when the residual is below the tolerance times the reference
+ * force |Q(u)| + |W| + |G^T lambda| (elastic, external and contact forces; not the inertia, whose
+ * unresolved high-frequency part can be arbitrarily large) plus a round-off floor of 1e3 eps
+ * (max diag(K_eff) |u| + |c M (u - u~)|), the active constraints hold to the gap tolerance, the
+ * last update left the active set unchanged (discrete complementarity: active pairs compressive
+ * and closed, inactive pairs open), and, if any pair is active, at least one linear solve was
+ * made. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
  *
  * Initial guess: the residual is first evaluated at the given guess (the Newmark predictor),
  * without the tangent (using the diagonal of the last tangent for the force scale), so that steps
@@ -54,12 +58,12 @@ public:
   struct Report
   {
     unsigned int linear_solves;
-    double residual_norm;
   };
 
   /**
    * `fixed_dofs` keep a zero increment. `length_scale` (e.g. the smallest element size) turns the
    * relative tolerance into the gap tolerance used for activation and constraint convergence.
+   * `timer` receives the phases "assembly" and "linear solve".
    */
   ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
                       const ElasticBodies<dim>& bodies,
@@ -67,7 +71,8 @@ public:
                       const Vector<double>& lumped_mass,
                       const std::vector<types::global_dof_index>& fixed_dofs,
                       const NewtonParameters& parameters,
-                      double length_scale);
+                      double length_scale,
+                      TimerOutput& timer);
 
   /**
    * Solves the step, with external forces W at t_{n+1}, for the increment u_{n+1} - u~ over the
@@ -101,6 +106,7 @@ private:
   const NewtonParameters parameters;
   const double gap_tolerance;
   const MPI_Comm communicator;
+  TimerOutput& timer;
   const bool owns_multiplier_rows;
   std::vector<bool> is_fixed;
   std::vector<types::global_dof_index> locally_owned_fixed_rows;

@@ -2,6 +2,7 @@
 
 #include <dyncontact/global.h>
 
+#include <algorithm>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -25,6 +26,12 @@ public:
   void add_row(const std::vector<double>& values);
 
   const std::vector<std::string>& column_names() const { return names; }
+
+  /** Whether there is a column `name`. */
+  bool has_column(const std::string& name) const
+  {
+    return std::find(names.begin(), names.end(), name) != names.end();
+  }
   unsigned int n_rows() const { return rows.size(); }
 
   /** All values of column `name`; throws std::out_of_range if there is no such column. */

@@ -38,6 +38,9 @@ public:
   double time_step() const { return dt; }
   NewmarkScheme scheme() const { return scheme_value; }
 
+  /** Sets the step size of the next steps (step control cuts and regrows it), dt > 0. */
+  void set_time_step(double time_step);
+
   /** 1 / (beta dt^2): multiplies M (u_{n+1} - u~) in the equation of motion. */
   double inertia_factor() const { return 1. / (beta_value * dt * dt); }
 
@@ -59,8 +62,10 @@ public:
                     Vector<double>& a_new) const;
 
   /**
-   * 1/2 v.Mv + W(u) + (beta - 1/4) dt^2/2 a.Ma: conserved exactly by gamma = 1/2 Newmark for a
-   * linear free system (the plain energy is not when beta != 1/4).
+   * 1/2 v.Mv + W(u) + (beta - gamma/2) dt^2/2 a.Ma, the energy of Hughes' energy method (The
+   * Finite Element Method, 2000, section 9.3.3): conserved exactly by gamma = 1/2 Newmark for a
+   * linear free system (the plain energy is not when beta != 1/4), and non-increasing for
+   * gamma > 1/2 with beta >= gamma/2, the dissipation being (gamma - 1/2) times positive terms.
    */
   double
   algorithmic_energy(double kinetic_energy, double strain_energy, double acceleration_energy) const;

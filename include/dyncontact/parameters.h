@@ -35,6 +35,8 @@ struct TimeIntegrationParameters
   double gamma;
   double time_step;
   double end_time;
+  /// a failing step is halved at most this many times (minimum step dt / 2^max_step_cuts)
+  unsigned int max_step_cuts;
 
   /** Number of steps: end time / time step, rounded up (the last step may end past end time). */
   unsigned int n_steps() const;
@@ -59,6 +61,23 @@ struct NewtonParameters
 {
   unsigned int max_iterations;
   double residual_tolerance;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/**
+ * The physical checks of every step (StepGuards): each on by default, with a tolerance relative to
+ * the run's own scale. Subsection `Guards`.
+ */
+struct GuardParameters
+{
+  bool energy;
+  double energy_tolerance;
+  bool tensile_force;
+  double tensile_force_tolerance;
+  bool momentum;
+  double momentum_tolerance;
 
   static void declare_parameters(ParameterHandler& prm);
   void parse_parameters(ParameterHandler& prm);
@@ -168,6 +187,7 @@ struct RunParameters
   TimeIntegrationParameters time;
   ContactParameters contact;
   NewtonParameters newton;
+  GuardParameters guards;
   GeometryParameters geometry; ///< bars only
   MeshParameters mesh;         ///< mesh-based problems only
   BodiesParameters bodies;     ///< mesh-based problems only

@@ -10,9 +10,11 @@
 #include <dyncontact/node_index.h>
 #include <dyncontact/parameters.h>
 #include <dyncontact/problem_model.h>
+#include <dyncontact/step_guards.h>
 #include <dyncontact/surface_tractions.h>
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
@@ -32,6 +34,11 @@ namespace dyncontact
  * advances Newmark (classical or modified) step by step, recording the history (history.csv), the
  * reference solution, profiles and VTU fields in Output/directory. Like the tutorial programs it
  * has setup / do_time_step / output phases; the physics lives in the classes it composes.
+ *
+ * Every solved step passes the StepGuards (energy, tensile force, momentum) before it is accepted;
+ * a step that fails (Newton, an inverted element, a guard) is taken back and cut in half by the
+ * StepController, down to the minimum of Time integration/maximum step cuts. history.csv has one
+ * row per accepted (sub-)step, with its size and the number of cuts before it.
  */
 template <int dim>
 class Simulation
@@ -68,11 +75,50 @@ public:
   const std::vector<Node<dim>>& monitor_nodes() const { return monitors; }
 
 private:
+  /** The state a failed step returns to. */
+  struct State
+  {
+    Vector<double> displacement, velocity, acceleration, internal_force, external_force;
+    typename ContactConstraints<dim>::State contact;
+    std::vector<double> body_forces, impulses;
+    double external_work;
+  };
+  State current_state() const;
+  void restore(const State& state);
+
+  /** What history.csv, the guards and the log read about the current state. */
+  struct Measures
+  {
+    double kinetic_energy, strain_energy, algorithmic_energy, contact_force, force_imbalance;
+    std::vector<double> momenta;
+  };
+  Measures measure() const;
+  StepGuards::Figures guard_figures(const Measures& measures) const;
+
   void setup();
   void warn_about_stability() const;
   void set_initial_conditions();
-  unsigned int do_time_step();
-  void record_step(unsigned int step, unsigned int linear_solves);
+  /** Solves the step from `before` to `time` with the Newmark step size; throws SolverFailure. */
+  unsigned int do_time_step(const State& before);
+  /**
+   * Per body, the force along the impact direction on its contact-candidate nodes (M a + Q - W)
+   * plus its total external force, at the current state: with sum Q = 0 over a free body this is
+   * the total force that changes its momentum, up to the Newton residual of its other nodes.
+   */
+  std::vector<double> body_forces() const;
+  /** Adds the impulses of the step from `before` (Newmark-weighted forces plus rate corrections).
+   */
+  void accumulate_impulses(const State& before);
+  /**
+   * Appends a history row for the current state; `nominal_step` is the nominal step index if the
+   * state lies on the nominal time grid (profiles and VTU are written only there), else 0.
+   */
+  void record_step(const Measures& measures,
+                   unsigned int nominal_step,
+                   unsigned int linear_solves,
+                   unsigned int cuts);
+  /** Writes the reference solution at the recorded times and the run's summary. */
+  void write_reference_and_summary();
   /** Q(u) - W at the last solve: what the contact force balances at a node. */
   Vector<double> net_internal_force() const;
   /** The nodal traction -p n on body A and p n on body B of every pair, p = `pressures`. */
@@ -85,7 +131,7 @@ private:
   const std::unique_ptr<ProblemModel<dim>> model;
   const bool is_root_rank;
   ConditionalOStream log;
-  const Newmark newmark;
+  Newmark newmark;
   parallel::shared::Triangulation<dim> triangulation;
   const FESystem<dim> fe;
   /** The curved-cell mapping, its support points computed once from the manifolds. */
@@ -108,6 +154,18 @@ private:
   unsigned int n_steps;
   double time;
   Vector<double> displacement, velocity, acceleration;
+  Vector<double> internal_force; ///< Q(u) at the current state
+  /** Per DoF: its body, and the impact-direction component of its unit vector. */
+  std::vector<unsigned int> dof_body;
+  std::vector<double> dof_direction;
+  std::vector<bool> is_contact_dof;     ///< a DoF of a node of some candidate pair
+  std::vector<double> forces_on_bodies; ///< body_forces() at the current state
+  std::vector<double> impulses;         ///< per body, accumulated since t = 0
+  double external_work = 0.;            ///< work of the external forces since t = 0
+  StepGuards guards;
   History step_history;
+  /** Rows of step_history on the nominal time grid (the Hertz comparison needs uniform steps). */
+  std::vector<unsigned int> nominal_rows;
+  TimerOutput timer;
 };
 } // namespace dyncontact

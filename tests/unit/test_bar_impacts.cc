@@ -164,7 +164,11 @@ TEST(BarImpacts, TwoBarMomentumIsConservedAtEveryStepByBothSchemes)
   for (const std::string& prm_file : {identical, dissimilar})
     for (const std::string scheme : {"classical", "modified"})
     {
-      const BarRun run = run_bar_case(prm_file, {"Time integration/scheme=" + scheme});
+      // The classical scheme at the paper's beta = 0.001 gains energy at the first release
+      // (the paper's point, 2500 times E_0 measured); the energy guard would stop it. Momentum
+      // conservation is an identity of either scheme, so it is checked with that guard off.
+      const BarRun run =
+          run_bar_case(prm_file, {"Time integration/scheme=" + scheme, "Guards/energy=false"});
       const auto p1 = run.history().column("momentum_1"), p2 = run.history().column("momentum_2");
       double drift = 0.;
       for (unsigned int row = 0; row < p1.size(); ++row)

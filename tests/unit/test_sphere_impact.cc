@@ -52,12 +52,17 @@ double pole_velocity_rms(const MeshRun& run)
 /**
  * The paper's rho = 1 impact with `scheme`, shared by the tests; small strain, so that the results
  * do not depend on how far the classical scheme's growing contact-node oscillations strain the
- * pole elements.
+ * pole elements. The classical run reproduces the paper's defect, so its energy guard is off
+ * (those oscillations gain energy; with the guard on, the steps would be cut until they do not).
  */
 const MeshRun& hard_impact(const std::string& scheme)
 {
-  static const MeshRun classical =
-      run_mesh_case("prm/spheres_rho1.prm", linear_elastic("classical"));
+  static const MeshRun classical = []
+  {
+    auto overrides = linear_elastic("classical");
+    overrides.push_back("Guards/energy=false");
+    return run_mesh_case("prm/spheres_rho1.prm", overrides);
+  }();
   static const MeshRun modified = run_mesh_case("prm/spheres_rho1.prm", linear_elastic("modified"));
   return scheme == "classical" ? classical : modified;
 }
