@@ -40,6 +40,15 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
   n_cells = triangulation.n_active_cells();
 }
 
+double AxisymmetricMeshModel::touching_tolerance() const
+{
+  double largest_position = 0.;
+  for (const SphereGeometry& sphere : spheres)
+    largest_position = std::max(largest_position, std::abs(sphere.centre[1]) + sphere.radius);
+  return std::max(1e-9 * shortest_edge,
+                  8. * std::numeric_limits<double>::epsilon() * largest_position);
+}
+
 double AxisymmetricMeshModel::dilatational_wave_speed(const unsigned int body) const
 {
   const BodyParameters& parameters = bodies.bodies[body];
@@ -105,7 +114,8 @@ AxisymmetricMeshModel::create_surface_contact(const DoFHandler<2>& dof_handler,
         ContactSurface<2>(dof_handler, kinematics, nodes, SphereMeshIds::surface(0)),
         ContactSurface<2>(dof_handler, kinematics, nodes, SphereMeshIds::surface(1)),
         contact.penalty_factor * stiffest / shortest_edge,
-        matching_tolerance);
+        matching_tolerance,
+        touching_tolerance());
   }
   catch (const InputError& error)
   {
@@ -163,12 +173,14 @@ std::optional<HertzImpactOfIdenticalSpheres> AxisymmetricMeshModel::hertz_refere
   const double approach_speed =
       (distance > 0. ? 1. : -1.) * (lower.initial_velocity->value(spheres[0].centre, 1) -
                                     upper.initial_velocity->value(spheres[1].centre, 1));
-  if (approach_speed <= 0. || std::abs(distance) <= 2. * radius)
+  // Spheres touching at t = 0 to the tolerance have gap zero: Hertz's impact starts at once.
+  const double gap = std::abs(distance) - 2. * radius;
+  if (approach_speed <= 0. || gap < -touching_tolerance())
     return std::nullopt;
   return HertzImpactOfIdenticalSpheres(
       ElasticSphere{radius, lower.youngs_modulus, lower.poissons_ratio, lower.density},
       approach_speed,
-      (std::abs(distance) - 2. * radius) / approach_speed);
+      gap <= touching_tolerance() ? 0. : gap / approach_speed);
 }
 
 void AxisymmetricMeshModel::write_reference(const std::string& directory,

@@ -21,7 +21,8 @@ template <int dim>
 NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
                                           ContactSurface<dim> surface_b,
                                           const double penalty_stiffness_per_area,
-                                          const double matching_tolerance)
+                                          const double matching_tolerance,
+                                          const double touching_tolerance)
     : surface_a(std::move(surface_a)), surface_b(std::move(surface_b))
 {
   const std::vector<Node<dim>>& nodes_a = this->surface_a.nodes();
@@ -58,8 +59,10 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
       continue;
     }
     ContactPair<dim> pair;
-    pair.node_a            = nodes_a[i];
-    pair.node_b            = nodes_b[partner];
+    pair.node_a = nodes_a[i];
+    pair.node_b = nodes_b[partner];
+    if (nodes_b[partner].position.distance(nodes_a[i].position) <= touching_tolerance)
+      pair.node_b->position = nodes_a[i].position;
     pair.penalty_stiffness = penalty_stiffness_per_area * 0.5 * (areas_a[i] + areas_b[partner]);
     candidate_pairs.push_back(pair);
     surface_nodes_of_pair.emplace_back(i, partner);
@@ -67,6 +70,19 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
   const auto reference_normals = current_normals(undeformed);
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
     candidate_pairs[k].normal = reference_normals[k];
+  if (unmatched == 0)
+    for (const ContactPair<dim>& pair : candidate_pairs)
+      if (pair.reference_gap() < -touching_tolerance)
+      {
+        std::ostringstream where;
+        where << pair.node_a.position;
+        throw InputError("body " + std::to_string(pair.node_a.body + 1) + " and body " +
+                         std::to_string(pair.node_b->body + 1) + " overlap at t = 0: the node " +
+                         where.str() + " of body " + std::to_string(pair.node_a.body + 1) +
+                         " lies " + format_number(-pair.reference_gap()) + " inside body " +
+                         std::to_string(pair.node_b->body + 1) + " (bodies may touch, to " +
+                         format_number(touching_tolerance) + ", but not overlap).");
+      }
   if (unmatched > 0)
     throw InputError(std::to_string(unmatched) + " of the " +
                      std::to_string(unmatched + candidate_pairs.size()) +

@@ -3,9 +3,13 @@
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <limits>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -126,6 +130,22 @@ parse_function(ParameterHandler& prm, const std::string& name, const std::string
 std::string bar_section(const unsigned int bar)
 {
   return "Bar " + std::to_string(bar + 1);
+}
+
+/**
+ * How close the ends of bars `a` and `b` (or of a bar and the wall at `wall`) count as touching:
+ * 1e-9 of the shorter element, and at least the round-off of the positions (8 units in the last
+ * place of the largest |x| involved), which matters far from the origin.
+ */
+double touching_tolerance(const BarParameters& a, const BarParameters& b, const double wall = 0.)
+{
+  const double largest_position = std::max({std::abs(a.left_end),
+                                            std::abs(a.right_end()),
+                                            std::abs(b.left_end),
+                                            std::abs(b.right_end()),
+                                            std::abs(wall)});
+  return std::max(1e-9 * std::min(a.element_length(), b.element_length()),
+                  8. * std::numeric_limits<double>::epsilon() * largest_position);
 }
 
 /** What the first parsing pass finds out: the kind of problem and the number of bodies. */
@@ -493,21 +513,53 @@ void GeometryParameters::parse_parameters(ParameterHandler& prm)
   prm.leave_subsection();
   prm.leave_subsection();
 
+  // Positions are compared with a tolerance: a left end typed as 0.3 and a right end computed as
+  // 0.1 + 0.2 = 0.30000000000000004 touch. Within it, bodies touch and are snapped together, so
+  // that the reference gap is exactly zero and contact starts closed; beyond it they overlap.
   for (unsigned int a = 0; a < n_bars; ++a)
     for (unsigned int b = a + 1; b < n_bars; ++b)
-      if (bars[a].left_end < bars[b].right_end() && bars[b].left_end < bars[a].right_end())
+    {
+      const double tolerance = touching_tolerance(bars[a], bars[b]);
+      const double overlap   = std::min(bars[a].right_end(), bars[b].right_end()) -
+                             std::max(bars[a].left_end, bars[b].left_end);
+      if (overlap > tolerance)
         throw InputError(
-            "Geometry: Bar " + std::to_string(a + 1) + " [" + format_number(bars[a].left_end) +
-            ", " + format_number(bars[a].right_end()) + "] and Bar " + std::to_string(b + 1) +
-            " [" + format_number(bars[b].left_end) + ", " + format_number(bars[b].right_end()) +
-            "] overlap at t = 0; bars may touch but not overlap.");
-  if (wall_enabled)
-    for (unsigned int bar = 0; bar < n_bars; ++bar)
-      if (bars[bar].right_end() > wall_position)
-        throw InputError("Geometry/Rigid wall/position = " + format_number(wall_position) +
-                         " lies inside Bar " + std::to_string(bar + 1) + " (right end " +
-                         format_number(bars[bar].right_end()) +
-                         "); the wall faces -x, so every bar must lie at x <= position.");
+            "Geometry: Bar " + std::to_string(a + 1) + " [" + format_exact(bars[a].left_end) +
+            ", " + format_exact(bars[a].right_end()) + "] and Bar " + std::to_string(b + 1) + " [" +
+            format_exact(bars[b].left_end) + ", " + format_exact(bars[b].right_end()) +
+            "] overlap at t = 0 by " + format_number(overlap) + "; bars may touch (to " +
+            format_number(tolerance) + ", 1e-9 of the shorter element) but not overlap.");
+    }
+  std::vector<unsigned int> x_order(n_bars);
+  std::iota(x_order.begin(), x_order.end(), 0u);
+  std::sort(x_order.begin(),
+            x_order.end(),
+            [this](const unsigned int a, const unsigned int b)
+            { return bars[a].left_end < bars[b].left_end; });
+  for (unsigned int i = 0; i + 1 < n_bars; ++i)
+  {
+    const BarParameters& left = bars[x_order[i]];
+    BarParameters& right      = bars[x_order[i + 1]];
+    if (right.left_end - left.right_end() <= touching_tolerance(left, right))
+      right.left_end = left.right_end();
+  }
+
+  if (!wall_enabled)
+    return;
+  const BarParameters& rightmost = bars[x_order.back()];
+  const double tolerance         = touching_tolerance(rightmost, rightmost, wall_position);
+  // Every bar lies left of the rightmost one's right end: the bars do not overlap.
+  if (rightmost.right_end() - wall_position > tolerance)
+    throw InputError("Geometry/Rigid wall/position = " + format_exact(wall_position) +
+                     " is left of the right end " + format_exact(rightmost.right_end()) +
+                     " of Bar " + std::to_string(x_order.back() + 1) + " [" +
+                     format_exact(rightmost.left_end) + ", " + format_exact(rightmost.right_end()) +
+                     "], which reaches " + format_number(rightmost.right_end() - wall_position) +
+                     " past it; the wall faces -x, so every bar must lie at x <= position "
+                     "(touching, to " +
+                     format_number(tolerance) + " = 1e-9 of an element, is allowed).");
+  if (wall_position - rightmost.right_end() <= tolerance)
+    wall_position = rightmost.right_end();
 }
 
 void OutputParameters::declare_parameters(ParameterHandler& prm)

@@ -43,11 +43,18 @@ public:
   /**
    * Pairs the facing nodes of `surface_a` (body A) and `surface_b` (body B). A pair's penalty
    * stiffness is `penalty_stiffness_per_area` times its reference contact area.
+   *
+   * The bodies may touch at t = 0 but not overlap. Two paired nodes closer than
+   * `touching_tolerance` are the same point: the pair's node B is given node A's position, so
+   * that its reference gap is exactly zero, whatever the normal, and the pair starts closed. A
+   * pair whose reference gap is below -`touching_tolerance` means that the bodies overlap: the
+   * constructor throws InputError, with the overlap and where it is.
    */
   NodeToNodeContact(ContactSurface<dim> surface_a,
                     ContactSurface<dim> surface_b,
                     double penalty_stiffness_per_area,
-                    double matching_tolerance);
+                    double matching_tolerance,
+                    double touching_tolerance);
 
   /** The candidate pairs, with their reference normals. */
   const std::vector<ContactPair<dim>>& pairs() const { return candidate_pairs; }
