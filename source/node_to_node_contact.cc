@@ -115,13 +115,27 @@ NodeToNodeContact<dim>::contact_pressures(const Vector<double>& displacement,
                                           const std::vector<double>& multipliers) const
 {
   AssertDimension(multipliers.size(), candidate_pairs.size());
-  Eigen::VectorXd nodal_forces = Eigen::VectorXd::Zero(surface_a.nodes().size());
+  std::vector<unsigned int> zone; // pairs whose node A carries the pressure field
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
-    nodal_forces(surface_nodes_of_pair[k].first) = multipliers[k];
-  const Eigen::VectorXd pressure = surface_a.mass_matrix(displacement).ldlt().solve(nodal_forces);
-  std::vector<double> pressures(candidate_pairs.size());
-  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
-    pressures[k] = pressure(surface_nodes_of_pair[k].first);
+    if (multipliers[k] != 0.)
+      zone.push_back(k);
+  std::vector<double> pressures(candidate_pairs.size(), 0.);
+  if (zone.empty())
+    return pressures;
+
+  const Eigen::MatrixXd mass = surface_a.mass_matrix(displacement);
+  Eigen::MatrixXd zone_mass(zone.size(), zone.size());
+  Eigen::VectorXd zone_forces(zone.size());
+  for (unsigned int i = 0; i < zone.size(); ++i)
+  {
+    zone_forces(i) = multipliers[zone[i]];
+    for (unsigned int j = 0; j < zone.size(); ++j)
+      zone_mass(i, j) =
+          mass(surface_nodes_of_pair[zone[i]].first, surface_nodes_of_pair[zone[j]].first);
+  }
+  const Eigen::VectorXd zone_pressures = zone_mass.ldlt().solve(zone_forces);
+  for (unsigned int i = 0; i < zone.size(); ++i)
+    pressures[zone[i]] = zone_pressures(i);
   return pressures;
 }
 
