@@ -2,7 +2,7 @@
 
 #include <dyncontact/axisymmetric_mesh_model.h>
 #include <dyncontact/bar_model.h>
-#include <dyncontact/command_line.h>
+#include <dyncontact/output_directory.h>
 
 #include <filesystem>
 #include <fstream>
