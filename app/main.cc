@@ -5,6 +5,7 @@
 #include <dyncontact/command_line.h>
 #include <dyncontact/output_directory.h>
 #include <dyncontact/parameters.h>
+#include <dyncontact/setup_check.h>
 #include <dyncontact/simulation.h>
 
 #include <deal.II/base/mpi.h>
@@ -56,6 +57,7 @@ int main(int argc, char** argv)
     case CommandLine::Action::validate:
     {
       const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+      check_run_setup(reader.parameters());
       std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
       return 0;
     }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace dyncontact
 {
@@ -86,6 +87,14 @@ Tensor<1, 2> AxisymmetricMeshModel::initial_velocity(const types::material_id bo
   Tensor<1, 2> velocity;
   for (unsigned int d = 0; d < 2; ++d)
     velocity[d] = bodies.bodies[body].initial_velocity->value(X, d);
+  if (!std::isfinite(velocity[0]) || !std::isfinite(velocity[1]))
+  {
+    std::ostringstream message;
+    message << "Bodies/Body " << body + 1 << "/Initial velocity/Function expression gives ("
+            << velocity[0] << ", " << velocity[1] << ") at the node (r, z) = (" << X[0] << ", "
+            << X[1] << ") of the body; the initial velocity must be finite at every node.";
+    throw InputError(message.str());
+  }
   return velocity;
 }
 

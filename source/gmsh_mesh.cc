@@ -492,4 +492,11 @@ std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
     throw;
   }
 }
+
+std::vector<std::string> geo_file_parameters(const std::string& geo_file)
+{
+  GmshSession session;
+  open_file(session, geo_file);
+  return declared_parameters();
+}
 } // namespace dyncontact

@@ -3,6 +3,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <unistd.h>
 
 namespace dyncontact
 {
@@ -22,6 +23,24 @@ void prepare_output_directory(const std::string& directory)
                        "' is not writable; give a writable directory.");
   }
   std::filesystem::remove(probe, error);
+}
+
+void check_output_directory(const std::string& directory)
+{
+  // The directory itself if it exists, else the nearest ancestor that does (where it would be
+  // created); a relative name without an existing ancestor lives in the working directory.
+  std::filesystem::path existing = std::filesystem::absolute(directory).lexically_normal();
+  std::error_code error;
+  while (!std::filesystem::exists(existing, error) && existing.has_relative_path())
+    existing = existing.parent_path();
+  const bool is_directory = std::filesystem::is_directory(existing, error);
+  if (!is_directory || access(existing.c_str(), W_OK | X_OK) != 0)
+    throw InputError("Output/directory = '" + directory + "' cannot be " +
+                     (existing == std::filesystem::absolute(directory).lexically_normal()
+                          ? std::string("written")
+                          : "created in '" + existing.string() + "'") +
+                     (is_directory ? ": permission denied" : ": not a directory") +
+                     "; give a writable directory.");
 }
 
 bool is_result_file(const std::string& file_name)

@@ -1,3 +1,4 @@
+#include <dyncontact/gmsh_mesh.h>
 #include <dyncontact/material.h>
 #include <dyncontact/parameters.h>
 
@@ -18,16 +19,18 @@ namespace dyncontact
 {
 namespace
 {
-/** The text deal.II attaches to one of its exceptions, without file/line decoration. */
+/**
+ * The text deal.II attaches to one of its exceptions, without file/line decoration, on one line:
+ * every run of white space (line breaks included) becomes one blank.
+ */
 std::string exception_text(const ExceptionBase& exception)
 {
   std::ostringstream text;
   exception.print_info(text);
-  std::string message = text.str();
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-    message.pop_back();
-  while (!message.empty() && (message.front() == ' ' || message.front() == '\n'))
-    message.erase(message.begin());
+  std::istringstream words(text.str());
+  std::string word, message;
+  while (words >> word)
+    message += (message.empty() ? "" : " ") + word;
   return message;
 }
 
@@ -108,22 +111,62 @@ std::string demangle_entry_path(const std::string& mangled)
   return path;
 }
 
-/** Parses the 2-component ParsedFunction in subsection `name`, naming it in any error. */
+/**
+ * Sends what is written to std::cerr into a string while it exists: deal.II's FunctionParser
+ * prints muParser's diagnosis there, line by line, before it throws.
+ */
+class CapturedErrorStream
+{
+public:
+  CapturedErrorStream() : original(std::cerr.rdbuf(captured.rdbuf())) {}
+  ~CapturedErrorStream() { std::cerr.rdbuf(original); }
+  CapturedErrorStream(const CapturedErrorStream&)            = delete;
+  CapturedErrorStream& operator=(const CapturedErrorStream&) = delete;
+
+private:
+  std::ostringstream captured;
+  std::streambuf* original;
+};
+
+/**
+ * Parses the 2-component ParsedFunction in subsection `name` and evaluates each component once,
+ * at the origin and t = 0: muParser compiles an expression only when it is first evaluated, so
+ * an unknown function or a syntax error shows here and not in the middle of a run. Any problem
+ * becomes an InputError naming the entry and the expression.
+ */
 std::shared_ptr<Functions::ParsedFunction<2>>
 parse_function(ParameterHandler& prm, const std::string& name, const std::string& section)
 {
   auto function = std::make_shared<Functions::ParsedFunction<2>>(2);
+  std::optional<std::string> error;
   prm.enter_subsection(name);
+  const std::string expression = prm.get("Function expression");
+  const std::string constants  = prm.get("Function constants");
   try
   {
     function->parse_parameters(prm);
   }
   catch (const ExceptionBase& exception)
   {
-    prm.leave_subsection();
-    throw InputError(section + "/" + name + ": " + exception_text(exception));
+    error = exception_text(exception);
   }
   prm.leave_subsection();
+  if (!error)
+    try
+    {
+      const CapturedErrorStream quiet;
+      for (unsigned int component = 0; component < function->n_components; ++component)
+        function->value(Point<2>(), component);
+    }
+    catch (const ExceptionBase& exception)
+    {
+      error = exception_text(exception);
+    }
+  if (error)
+    throw InputError(section + "/" + name + "/Function expression = '" + expression + "'" +
+                     (constants.empty() ? "" : " (constants '" + constants + "')") + ": " + *error +
+                     "; it must give 2 components '(x-component); (y-component)' of x = r, y = z "
+                     "and t in muParser syntax.");
   return function;
 }
 
@@ -242,13 +285,36 @@ void MeshParameters::parse_parameters(ParameterHandler& prm,
   if (!std::filesystem::is_regular_file(file))
     throw InputError("Mesh/file = '" + given.string() + "': no such file ('" + file +
                      "'; relative paths are taken relative to the parameter file).");
+  const std::string extension = std::filesystem::path(file).extension().string();
+  if (extension != ".geo" && extension != ".msh")
+    throw InputError("Mesh/file = '" + given.string() + "': unknown extension '" + extension +
+                     "'; allowed are .geo (meshed by gmsh) and .msh (a gmsh mesh).");
+  const std::string given_parameters = prm.get("geo parameters");
   geo_parameters.clear();
-  for (const auto& pair : Utilities::split_string_list(prm.get("geo parameters"), ','))
+  for (const auto& pair : Utilities::split_string_list(given_parameters, ','))
   {
     const std::vector<std::string> name_and_value = Utilities::split_string_list(pair, ':');
     geo_parameters[name_and_value[0]]             = Utilities::string_to_double(name_and_value[1]);
   }
   prm.leave_subsection();
+
+  if (geo_parameters.empty())
+    return;
+  if (extension == ".msh")
+    throw InputError("Mesh/geo parameters = '" + given_parameters + "': Mesh/file = '" +
+                     given.string() +
+                     "' is a finished mesh and takes no parameters; they apply to .geo files.");
+  const std::vector<std::string> known = geo_file_parameters(file);
+  for (const auto& [name, value] : geo_parameters)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+    {
+      std::string names;
+      for (const std::string& known_name : known)
+        names += (names.empty() ? "" : ", ") + known_name;
+      throw InputError("Mesh/geo parameters = '" + given_parameters + "': '" + given.string() +
+                       "' has no parameter '" + name +
+                       "'; its parameters are: " + (names.empty() ? "none" : names) + ".");
+    }
 }
 
 void BodyParameters::declare_parameters(ParameterHandler& prm)

@@ -32,6 +32,7 @@ public:
   void create_triangulation(Triangulation<2>& triangulation) override;
   std::vector<BodyMaterial> body_materials() const override;
   std::unique_ptr<Kinematics<2>> create_kinematics() const override;
+  /** Body b's `Initial velocity` at X; throws InputError if it is not finite there. */
   Tensor<1, 2> initial_velocity(types::material_id body, const Point<2>& X) const override;
   /** None: the contact of two bodies has current normals, see create_surface_contact(). */
   std::vector<ContactPair<2>> contact_pairs(const NodeIndex<2>& nodes) const override;

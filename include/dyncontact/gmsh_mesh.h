@@ -90,4 +90,12 @@ struct SphereGeometry
 std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
                                            const std::map<std::string, double>& geo_parameters,
                                            Triangulation<2>& triangulation);
+
+/**
+ * The names of the parameters that the `.geo` file `geo_file` declares for setting from outside
+ * (`DefineConstant[name = {default, Name "Parameters/name"}]`), sorted: the keys that
+ * read_gmsh_mesh() accepts in `geo_parameters`. gmsh reads the file without meshing it; if it
+ * cannot, InputError names the file and gmsh's complaint.
+ */
+std::vector<std::string> geo_file_parameters(const std::string& geo_file);
 } // namespace dyncontact

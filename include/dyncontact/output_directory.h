@@ -13,6 +13,13 @@ namespace dyncontact
 void prepare_output_directory(const std::string& directory);
 
 /**
+ * Checks, without creating or writing anything, that prepare_output_directory() can succeed:
+ * `directory` is a writable directory, or it does not exist and its nearest existing ancestor is
+ * a writable directory. Throws InputError naming Output/directory otherwise. For --validate.
+ */
+void check_output_directory(const std::string& directory);
+
+/**
  * Whether `file_name` (a name without directory) is one that a dyncontact run writes into its
  * output directory: history.csv, exact.csv, hertz.csv, impact_summary.csv, cells.csv,
  * profile_t<T>.csv, contact_pressure_t<T>.csv, solution_<step>.<rank>.vtu, solution_<step>.pvtu,
