@@ -218,6 +218,11 @@ void AxisymmetricMeshModel::summarize_run(const std::string& directory,
   const auto hertz = hertz_reference();
   if (!hertz)
     return;
+  if (history.n_rows() < 3)
+  {
+    log << "  no comparison with Hertz (impact_summary.csv): it needs at least 2 time steps.\n";
+    return;
+  }
   const ImpactMeasures fe = measure_impact(history.column("time"), history.column("contact_force"));
   struct Row
   {

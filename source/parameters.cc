@@ -439,7 +439,8 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
 
 unsigned int TimeIntegrationParameters::n_steps() const
 {
-  return static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9));
+  // At least one: an end time below 1e-9 of the time step is not a run of zero steps.
+  return std::max(1u, static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9)));
 }
 
 void ContactParameters::declare_parameters(ParameterHandler& prm)

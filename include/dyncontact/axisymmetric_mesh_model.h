@@ -63,7 +63,8 @@ public:
   /**
    * For a Hertz impact: measures the contact force history (measure_impact()) and writes
    * impact_summary.csv, the peak force, its time, contact start, end and duration, impulse and
-   * ringing next to Hertz's values and the relative differences.
+   * ringing next to Hertz's values and the relative differences. A run of one step has nothing
+   * to measure: it writes nothing and says so.
    */
   void summarize_run(const std::string& directory,
                      const History& history,

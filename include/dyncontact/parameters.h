@@ -36,7 +36,10 @@ struct TimeIntegrationParameters
   double time_step;
   double end_time;
 
-  /** Number of steps: end time / time step, rounded up (the last step may end past end time). */
+  /**
+   * Number of steps: end time / time step, rounded up (the last step may end past end time), at
+   * least 1.
+   */
   unsigned int n_steps() const;
 
   static void declare_parameters(ParameterHandler& prm);
