@@ -3,7 +3,9 @@
 #include <dyncontact/axisymmetric_mesh_model.h>
 #include <dyncontact/bar_model.h>
 #include <dyncontact/command_line.h>
+#include <dyncontact/output_directory.h>
 #include <dyncontact/parameters.h>
+#include <dyncontact/setup_check.h>
 #include <dyncontact/simulation.h>
 
 #include <deal.II/base/mpi.h>
@@ -55,6 +57,7 @@ int main(int argc, char** argv)
     case CommandLine::Action::validate:
     {
       const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+      check_run_setup(reader.parameters());
       std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
       return 0;
     }
@@ -65,8 +68,15 @@ int main(int argc, char** argv)
       on_root_rank(
           [&]
           {
-            prepare_output_directory(parameters.output.directory);
-            reader.write_records(parameters.output.directory);
+            const std::string& directory = parameters.output.directory;
+            prepare_output_directory(directory);
+            // The run owns its directory: no result of an earlier run may pass for one of it.
+            const unsigned int n_removed = remove_previous_results(directory);
+            if (n_removed > 0)
+              std::cout << "dyncontact: removed " << n_removed << " result file"
+                        << (n_removed > 1 ? "s" : "") << " of an earlier run from " << directory
+                        << "\n";
+            reader.write_records(directory);
           });
       if (parameters.problem.geometry == GeometryKind::bars)
         Simulation<1>(parameters,

@@ -7,7 +7,8 @@
 // (contact) surfaces.
 //
 // Parameters, settable from outside (gmsh -setnumber NAME VALUE, or dyncontact's read_gmsh_mesh):
-//   CentreDistance  distance of the two centres [length], > 2 R (the spheres must not overlap) (20)
+//   CentreDistance  distance of the two centres [length], >= 2 R (the spheres may touch but not
+//                   overlap)                                                             (20)
 //   and R, Divisions, RadialDivisions, Refinement, PoleGrading, SurfaceGrading, CoreOffset as in
 //   sphere.geo (CentreZ and PoleSide are set here and are not parameters of this file).
 //
@@ -26,8 +27,9 @@ SphereMacroOnly = 1;
 Include "sphere.geo";
 
 DefineConstant[ CentreDistance = {20, Name "Parameters/CentreDistance"} ];
-If (CentreDistance <= 2 * R)
-  Error("two_spheres.geo: CentreDistance = %g, but the spheres overlap unless it is > 2 R = %g",
+// Touching (to 1e-9 R, round-off of typed numbers) is allowed: the contact poles then coincide.
+If (CentreDistance < 2 * R - 1e-9 * R)
+  Error("two_spheres.geo: CentreDistance = %.17g, but the spheres overlap unless it is >= 2 R = %.17g",
         CentreDistance, 2 * R);
 EndIf
 

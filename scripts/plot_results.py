@@ -4,7 +4,9 @@
 Usage: plot_results.py RUN_DIR [RUN_DIR ...] [--output DIR] [--labels L1 L2 ...] [--tmax T]
                        [--magnify M]
 
-Each RUN_DIR holds history.csv and optionally exact.csv, hertz.csv and parameters.prm.
+Each RUN_DIR holds history.csv and optionally exact.csv, hertz.csv and parameters.prm. Profiles
+(profile_t<T>.csv, contact_pressure_t<T>.csv) are taken only at the run's own profile times, read
+from its parameters.prm, so that files another run left in the directory are not drawn.
 Writes tip_velocity.png, tip_acceleration.png, tip_displacement.png, contact_force.png
 and energy.png, each with one panel per run side by side, and prints their paths.
 
@@ -26,6 +28,7 @@ hertz.csv, get in addition:
 """
 import argparse
 import csv
+import math
 import os
 import re
 import sys
@@ -327,20 +330,55 @@ def plot_figure(path, title, ylabel, panels, labels):
     return True
 
 
+def run_profile_times(run_dir):
+    """The set of T of the profile_t<T>.csv and contact_pressure_t<T>.csv files the run in run_dir
+    wrote, named as dyncontact names them: each entry of Output/profile times in its
+    parameters.prm moved to the nearest step, step = lround(T / dt), and printed as C++ prints
+    step * dt (%g, 6 significant digits); times after the last step are left out, as the run
+    leaves them out. None if parameters.prm does not give the time step, end time and profile
+    times."""
+    prm = read_parameters(run_dir)
+    try:
+        dt = float(prm['time integration/time step'])
+        end = float(prm['time integration/end time'])
+        requested = [float(t) for t in prm['output/profile times'].split(',') if t.strip()]
+    except (KeyError, ValueError):
+        return None
+    if not (dt > 0 and end > 0):
+        return None
+    n_steps = math.ceil(end / dt - 1e-9)
+    names = set()
+    for time in requested:
+        if time > (n_steps + 0.5) * dt:
+            continue
+        steps = time / dt
+        step = int(steps) + (1 if steps - int(steps) >= 0.5 else 0)  # lround for steps >= 0
+        names.add(f'{step * dt:g}')
+    return names
+
+
 def profile_files(run_dir, prefix, tmax):
-    """{T: path} of the files <prefix><T>.csv in run_dir whose T is a number <= tmax."""
+    """{T: path} of the files <prefix><T>.csv in run_dir whose T is a number <= tmax and one of
+    the run's own profile times (run_profile_times()): a file left in the directory by another
+    run is skipped with a note. Without the run's parameters.prm every such file is taken."""
     try:
         names = os.listdir(run_dir)
     except OSError as e:
         raise InputError(f'cannot list {run_dir}: {e}') from None
+    own_times = run_profile_times(run_dir)
     found = {}
-    for name in names:
+    for name in sorted(names):
         match = re.fullmatch(re.escape(prefix) + r'(.+)\.csv', name)
         if not match:
             continue
         try:
             time = float(match.group(1))
         except ValueError:
+            continue
+        if own_times is not None and match.group(1) not in own_times:
+            print(f'{os.path.basename(sys.argv[0])}: note: {os.path.join(run_dir, name)} is not '
+                  'a result of this run (not one of the profile times of its parameters.prm); '
+                  'skipped', file=sys.stderr)
             continue
         if np.isfinite(time) and (tmax is None or time <= tmax):
             found[match.group(1)] = os.path.join(run_dir, name)

@@ -39,8 +39,10 @@ void BarModel::create_triangulation(Triangulation<1>& triangulation)
   {
     const BarParameters& bar        = geometry.bars[b];
     const unsigned int first_vertex = vertices.size();
-    for (unsigned int i = 0; i <= bar.n_elements; ++i)
+    // The ends exactly at left_end and right_end(), where the parameters put touching bodies.
+    for (unsigned int i = 0; i < bar.n_elements; ++i)
       vertices.emplace_back(bar.left_end + bar.length * i / bar.n_elements);
+    vertices.emplace_back(bar.right_end());
     for (unsigned int e = 0; e < bar.n_elements; ++e)
     {
       CellData<1> cell;

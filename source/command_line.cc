@@ -1,8 +1,5 @@
 #include <dyncontact/command_line.h>
 
-#include <filesystem>
-#include <fstream>
-
 namespace dyncontact
 {
 CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
@@ -69,7 +66,8 @@ std::string CommandLine::usage()
          "      run the problem; every --set overrides one entry of FILE.prm (repeatable),\n"
          "      --output DIR is short for --set \"Output/directory=DIR\".\n"
          "  dyncontact --validate FILE.prm [--set ...]\n"
-         "      read and check the parameters, run nothing.\n"
+         "      check the parameters and the mesh as a run does before its first step, run\n"
+         "      nothing, write nothing.\n"
          "  dyncontact --print-parameters\n"
          "      print every entry with its documentation, default and allowed values.\n"
          "  dyncontact --help\n"
@@ -77,25 +75,8 @@ std::string CommandLine::usage()
          "A run writes into Output/directory: history.csv (one row per step), the reference\n"
          "solution (exact.csv for bars, hertz.csv and impact_summary.csv for two identical\n"
          "spheres), profile_t<T>.csv (and contact_pressure_t<T>.csv, cells.csv for meshes),\n"
-         "solution-*.vtu with solution.pvd, original.prm (the input as given) and\n"
-         "parameters.prm (every value in effect).\n";
-}
-
-void prepare_output_directory(const std::string& directory)
-{
-  std::error_code error;
-  std::filesystem::create_directories(directory, error);
-  if (error || !std::filesystem::is_directory(directory))
-    throw InputError("Output/directory = '" + directory + "' cannot be created" +
-                     (error ? " (" + error.message() + ")" : std::string()) +
-                     "; give a writable directory.");
-  const std::string probe = directory + "/.dyncontact-write-test";
-  {
-    std::ofstream file(probe);
-    if (!(file << "ok"))
-      throw InputError("Output/directory = '" + directory +
-                       "' is not writable; give a writable directory.");
-  }
-  std::filesystem::remove(probe, error);
+         "solution_*.vtu with solution.pvd, original.prm (the input as given) and\n"
+         "parameters.prm (every value in effect). It first removes these files of an earlier\n"
+         "run from the directory (other files stay).\n";
 }
 } // namespace dyncontact

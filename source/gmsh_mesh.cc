@@ -118,60 +118,149 @@ private:
 };
 
 /**
- * Meshes the .geo file `geo_file` in 2D with gmsh, after setting its parameters, into linear
- * quadrilaterals (recombined) and writes the physical groups' elements to `msh_file` (ASCII
- * format 4.1). It does not check the mesh; read_msh_file() and the checks after it do.
+ * Opens `file` (.geo or .msh) in the gmsh session; gmsh's complaints about it become an
+ * InputError naming the file.
  */
-void mesh_geo_file(const std::string& geo_file,
-                   const std::map<std::string, double>& geo_parameters,
-                   const std::string& msh_file)
+void open_file(const GmshSession& session, const std::string& file)
 {
-  GmshSession session;
+  const std::string failure = std::filesystem::path(file).extension() == ".msh"
+                                  ? "not a readable gmsh mesh: "
+                                  : "gmsh failed: ";
   try
   {
-    // The first pass declares the parameters (with their defaults) in gmsh's ONELAB database;
-    // the second reads the file again with the values set there.
-    gmsh::open(geo_file);
-    if (!geo_parameters.empty())
-    {
-      std::vector<std::string> declared;
-      gmsh::onelab::getNames(declared, parameter_folder + ".*");
-      for (const auto& [name, value] : geo_parameters)
-      {
-        if (std::find(declared.begin(), declared.end(), parameter_folder + name) == declared.end())
-        {
-          std::string allowed;
-          for (const std::string& declared_name : declared)
-            allowed +=
-                (allowed.empty() ? "" : ", ") + declared_name.substr(parameter_folder.size());
-          throw InputError(about(geo_file) + "it has no parameter '" + name +
-                           "'; its parameters are: " + (allowed.empty() ? "none" : allowed) + ".");
-        }
-        gmsh::onelab::setNumber(parameter_folder + name, {value});
-      }
-      gmsh::clear();
-      gmsh::open(geo_file);
-    }
-
-    gmsh::option::setNumber("Mesh.ElementOrder", 1);
-    gmsh::option::setNumber("Mesh.RecombineAll", 1);
-    gmsh::option::setNumber("Mesh.SaveAll", 0);
-    gmsh::option::setNumber("Mesh.Binary", 0);
-    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-    gmsh::model::mesh::generate(2);
-    gmsh::write(msh_file);
+    gmsh::open(file);
   }
   catch (const std::string& gmsh_error)
   {
     // gmsh throws its first error's text; the log holds it together with earlier ones.
     const std::string errors = session.logged_errors();
-    throw InputError(about(geo_file) +
+    throw InputError(about(file) + failure + (errors.empty() ? one_line(gmsh_error) : errors));
+  }
+  const std::string errors = session.logged_errors();
+  if (!errors.empty())
+    throw InputError(about(file) + failure + errors);
+}
+
+/** The parameters of the .geo file open in the session, sorted, without the ONELAB folder. */
+std::vector<std::string> declared_parameters()
+{
+  std::vector<std::string> names;
+  gmsh::onelab::getNames(names, parameter_folder + ".*");
+  for (std::string& name : names)
+    name = name.substr(parameter_folder.size());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/**
+ * Checks the element types of the mesh in the session: quadrilaterals (of any order) as cells,
+ * lines and points on the boundary, nothing else; throws InputError naming `filename` and the
+ * types found otherwise. Returns whether some elements are of higher order than 1.
+ */
+bool check_element_types(const std::string& filename)
+{
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types);
+  std::size_t n_cells = 0, n_other_cells = 0;
+  std::string other_types;
+  bool higher_order = false;
+  for (const int type : types)
+  {
+    std::string name;
+    int dim, order, n_nodes, n_primary_nodes;
+    std::vector<double> local_coordinates;
+    gmsh::model::mesh::getElementProperties(
+        type, name, dim, order, n_nodes, local_coordinates, n_primary_nodes);
+    std::vector<std::size_t> elements, nodes;
+    gmsh::model::mesh::getElementsByType(type, elements, nodes);
+    higher_order = higher_order || order > 1;
+    if (dim < 2)
+      continue;
+    n_cells += elements.size();
+    if (dim > 2 || name.compare(0, 13, "Quadrilateral") != 0)
+    {
+      n_other_cells += elements.size();
+      other_types +=
+          (other_types.empty() ? "" : ", ") + std::to_string(elements.size()) + " '" + name + "'";
+    }
+  }
+  if (n_other_cells > 0)
+    throw InputError(about(filename) + std::to_string(n_other_cells) + " of its " +
+                     std::to_string(n_cells) + " cells are not quadrilaterals (" + other_types +
+                     "); only quadrilaterals (4-, 8- or 9-node) are allowed (in a .geo file: "
+                     "Transfinite and Recombine Surface).");
+  return higher_order;
+}
+
+/**
+ * Prepares `mesh_file` for deal.II's reader, which takes first-order cells only, and returns the
+ * name of the file it is to read. A .geo file is meshed in 2D with gmsh, after its parameters are
+ * set, into linear quadrilaterals (recombined) and written to `msh_file` (ASCII format 4.1, the
+ * elements of the physical groups): `msh_file` is returned. A .msh file is read by gmsh to check
+ * its element types (check_element_types()); one of higher order is reduced to first order on
+ * the same vertices (the mapping curves the boundary from the manifolds) and written, whole, to
+ * `msh_file`, which is returned; a first-order one is returned as it is, for deal.II to read
+ * directly (its tags element by element, as in gmsh format 2). It does not check cells and
+ * groups; read_msh_file() and the checks after it do.
+ */
+std::string first_order_mesh(const std::string& mesh_file,
+                             const std::map<std::string, double>& geo_parameters,
+                             const std::string& msh_file)
+{
+  GmshSession session;
+  const bool is_geo = std::filesystem::path(mesh_file).extension() == ".geo";
+  // The first pass declares the parameters (with their defaults) in gmsh's ONELAB database;
+  // the second reads the file again with the values set there.
+  open_file(session, mesh_file);
+  if (!geo_parameters.empty())
+  {
+    const std::vector<std::string> declared = declared_parameters();
+    for (const auto& [name, value] : geo_parameters)
+    {
+      if (std::find(declared.begin(), declared.end(), name) == declared.end())
+      {
+        std::string allowed;
+        for (const std::string& declared_name : declared)
+          allowed += (allowed.empty() ? "" : ", ") + declared_name;
+        throw InputError(about(mesh_file) + "it has no parameter '" + name +
+                         "'; its parameters are: " + (allowed.empty() ? "none" : allowed) + ".");
+      }
+      gmsh::onelab::setNumber(parameter_folder + name, {value});
+    }
+    gmsh::clear();
+    open_file(session, mesh_file);
+  }
+
+  try
+  {
+    if (is_geo)
+    {
+      gmsh::option::setNumber("Mesh.ElementOrder", 1);
+      gmsh::option::setNumber("Mesh.RecombineAll", 1);
+      gmsh::model::mesh::generate(2);
+    }
+    const bool higher_order = check_element_types(mesh_file);
+    if (!is_geo && !higher_order)
+      return mesh_file;
+    if (higher_order)
+      gmsh::model::mesh::setOrder(1);
+    // A .msh file is written whole, so that cells outside the physical groups are found later.
+    gmsh::option::setNumber("Mesh.SaveAll", is_geo ? 0 : 1);
+    gmsh::option::setNumber("Mesh.Binary", 0);
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::write(msh_file);
+  }
+  catch (const std::string& gmsh_error)
+  {
+    const std::string errors = session.logged_errors();
+    throw InputError(about(mesh_file) +
                      "gmsh failed: " + (errors.empty() ? one_line(gmsh_error) : errors));
   }
 
   const std::string errors = session.logged_errors();
   if (!errors.empty())
-    throw InputError(about(geo_file) + "gmsh failed: " + errors);
+    throw InputError(about(mesh_file) + "gmsh failed: " + errors);
+  return msh_file;
 }
 
 /**
@@ -381,14 +470,11 @@ std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
 
   try
   {
-    if (extension == ".geo")
     {
       const TemporaryFile msh_file(".msh");
-      mesh_geo_file(filename, geo_parameters, msh_file.name());
-      read_msh_file(msh_file.name(), filename, triangulation);
+      read_msh_file(
+          first_order_mesh(filename, geo_parameters, msh_file.name()), filename, triangulation);
     }
-    else
-      read_msh_file(filename, filename, triangulation);
 
     const unsigned int n_bodies = assign_bodies(filename, triangulation);
     const std::vector<std::vector<Point<2>>> surface_vertices =
@@ -405,5 +491,12 @@ std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
     triangulation.clear();
     throw;
   }
+}
+
+std::vector<std::string> geo_file_parameters(const std::string& geo_file)
+{
+  GmshSession session;
+  open_file(session, geo_file);
+  return declared_parameters();
 }
 } // namespace dyncontact

@@ -21,7 +21,8 @@ template <int dim>
 NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
                                           ContactSurface<dim> surface_b,
                                           const double penalty_stiffness_per_area,
-                                          const double matching_tolerance)
+                                          const double matching_tolerance,
+                                          const double touching_tolerance)
     : surface_a(std::move(surface_a)), surface_b(std::move(surface_b))
 {
   const std::vector<Node<dim>>& nodes_a = this->surface_a.nodes();
@@ -58,8 +59,10 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
       continue;
     }
     ContactPair<dim> pair;
-    pair.node_a            = nodes_a[i];
-    pair.node_b            = nodes_b[partner];
+    pair.node_a = nodes_a[i];
+    pair.node_b = nodes_b[partner];
+    if (nodes_b[partner].position.distance(nodes_a[i].position) <= touching_tolerance)
+      pair.node_b->position = nodes_a[i].position;
     pair.penalty_stiffness = penalty_stiffness_per_area * 0.5 * (areas_a[i] + areas_b[partner]);
     candidate_pairs.push_back(pair);
     surface_nodes_of_pair.emplace_back(i, partner);
@@ -67,6 +70,19 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
   const auto reference_normals = current_normals(undeformed);
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
     candidate_pairs[k].normal = reference_normals[k];
+  if (unmatched == 0)
+    for (const ContactPair<dim>& pair : candidate_pairs)
+      if (pair.reference_gap() < -touching_tolerance)
+      {
+        std::ostringstream where;
+        where << pair.node_a.position;
+        throw InputError("body " + std::to_string(pair.node_a.body + 1) + " and body " +
+                         std::to_string(pair.node_b->body + 1) + " overlap at t = 0: the node " +
+                         where.str() + " of body " + std::to_string(pair.node_a.body + 1) +
+                         " lies " + format_number(-pair.reference_gap()) + " inside body " +
+                         std::to_string(pair.node_b->body + 1) + " (bodies may touch, to " +
+                         format_number(touching_tolerance) + ", but not overlap).");
+      }
   if (unmatched > 0)
     throw InputError(std::to_string(unmatched) + " of the " +
                      std::to_string(unmatched + candidate_pairs.size()) +
@@ -99,13 +115,27 @@ NodeToNodeContact<dim>::contact_pressures(const Vector<double>& displacement,
                                           const std::vector<double>& multipliers) const
 {
   AssertDimension(multipliers.size(), candidate_pairs.size());
-  Eigen::VectorXd nodal_forces = Eigen::VectorXd::Zero(surface_a.nodes().size());
+  std::vector<unsigned int> zone; // pairs whose node A carries the pressure field
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
-    nodal_forces(surface_nodes_of_pair[k].first) = multipliers[k];
-  const Eigen::VectorXd pressure = surface_a.mass_matrix(displacement).ldlt().solve(nodal_forces);
-  std::vector<double> pressures(candidate_pairs.size());
-  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
-    pressures[k] = pressure(surface_nodes_of_pair[k].first);
+    if (multipliers[k] != 0.)
+      zone.push_back(k);
+  std::vector<double> pressures(candidate_pairs.size(), 0.);
+  if (zone.empty())
+    return pressures;
+
+  const Eigen::MatrixXd mass = surface_a.mass_matrix(displacement);
+  Eigen::MatrixXd zone_mass(zone.size(), zone.size());
+  Eigen::VectorXd zone_forces(zone.size());
+  for (unsigned int i = 0; i < zone.size(); ++i)
+  {
+    zone_forces(i) = multipliers[zone[i]];
+    for (unsigned int j = 0; j < zone.size(); ++j)
+      zone_mass(i, j) =
+          mass(surface_nodes_of_pair[zone[i]].first, surface_nodes_of_pair[zone[j]].first);
+  }
+  const Eigen::VectorXd zone_pressures = zone_mass.ldlt().solve(zone_forces);
+  for (unsigned int i = 0; i < zone.size(); ++i)
+    pressures[zone[i]] = zone_pressures(i);
   return pressures;
 }
 

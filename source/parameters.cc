@@ -1,11 +1,16 @@
+#include <dyncontact/gmsh_mesh.h>
 #include <dyncontact/material.h>
 #include <dyncontact/parameters.h>
 
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <limits>
+#include <numeric>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -14,16 +19,18 @@ namespace dyncontact
 {
 namespace
 {
-/** The text deal.II attaches to one of its exceptions, without file/line decoration. */
+/**
+ * The text deal.II attaches to one of its exceptions, without file/line decoration, on one line:
+ * every run of white space (line breaks included) becomes one blank.
+ */
 std::string exception_text(const ExceptionBase& exception)
 {
   std::ostringstream text;
   exception.print_info(text);
-  std::string message = text.str();
-  while (!message.empty() && (message.back() == '\n' || message.back() == ' '))
-    message.pop_back();
-  while (!message.empty() && (message.front() == ' ' || message.front() == '\n'))
-    message.erase(message.begin());
+  std::istringstream words(text.str());
+  std::string word, message;
+  while (words >> word)
+    message += (message.empty() ? "" : " ") + word;
   return message;
 }
 
@@ -104,28 +111,84 @@ std::string demangle_entry_path(const std::string& mangled)
   return path;
 }
 
-/** Parses the 2-component ParsedFunction in subsection `name`, naming it in any error. */
+/**
+ * Sends what is written to std::cerr into a string while it exists: deal.II's FunctionParser
+ * prints muParser's diagnosis there, line by line, before it throws.
+ */
+class CapturedErrorStream
+{
+public:
+  CapturedErrorStream() : original(std::cerr.rdbuf(captured.rdbuf())) {}
+  ~CapturedErrorStream() { std::cerr.rdbuf(original); }
+  CapturedErrorStream(const CapturedErrorStream&)            = delete;
+  CapturedErrorStream& operator=(const CapturedErrorStream&) = delete;
+
+private:
+  std::ostringstream captured;
+  std::streambuf* original;
+};
+
+/**
+ * Parses the 2-component ParsedFunction in subsection `name` and evaluates each component once,
+ * at the origin and t = 0: muParser compiles an expression only when it is first evaluated, so
+ * an unknown function or a syntax error shows here and not in the middle of a run. Any problem
+ * becomes an InputError naming the entry and the expression.
+ */
 std::shared_ptr<Functions::ParsedFunction<2>>
 parse_function(ParameterHandler& prm, const std::string& name, const std::string& section)
 {
   auto function = std::make_shared<Functions::ParsedFunction<2>>(2);
+  std::optional<std::string> error;
   prm.enter_subsection(name);
+  const std::string expression = prm.get("Function expression");
+  const std::string constants  = prm.get("Function constants");
   try
   {
     function->parse_parameters(prm);
   }
   catch (const ExceptionBase& exception)
   {
-    prm.leave_subsection();
-    throw InputError(section + "/" + name + ": " + exception_text(exception));
+    error = exception_text(exception);
   }
   prm.leave_subsection();
+  if (!error)
+    try
+    {
+      const CapturedErrorStream quiet;
+      for (unsigned int component = 0; component < function->n_components; ++component)
+        function->value(Point<2>(), component);
+    }
+    catch (const ExceptionBase& exception)
+    {
+      error = exception_text(exception);
+    }
+  if (error)
+    throw InputError(section + "/" + name + "/Function expression = '" + expression + "'" +
+                     (constants.empty() ? "" : " (constants '" + constants + "')") + ": " + *error +
+                     "; it must give 2 components '(x-component); (y-component)' of x = r, y = z "
+                     "and t in muParser syntax.");
   return function;
 }
 
 std::string bar_section(const unsigned int bar)
 {
   return "Bar " + std::to_string(bar + 1);
+}
+
+/**
+ * How close the ends of bars `a` and `b` (or of a bar and the wall at `wall`) count as touching:
+ * 1e-9 of the shorter element, and at least the round-off of the positions (8 units in the last
+ * place of the largest |x| involved), which matters far from the origin.
+ */
+double touching_tolerance(const BarParameters& a, const BarParameters& b, const double wall = 0.)
+{
+  const double largest_position = std::max({std::abs(a.left_end),
+                                            std::abs(a.right_end()),
+                                            std::abs(b.left_end),
+                                            std::abs(b.right_end()),
+                                            std::abs(wall)});
+  return std::max(1e-9 * std::min(a.element_length(), b.element_length()),
+                  8. * std::numeric_limits<double>::epsilon() * largest_position);
 }
 
 /** What the first parsing pass finds out: the kind of problem and the number of bodies. */
@@ -223,13 +286,36 @@ void MeshParameters::parse_parameters(ParameterHandler& prm,
   if (!std::filesystem::is_regular_file(file))
     throw InputError("Mesh/file = '" + given.string() + "': no such file ('" + file +
                      "'; relative paths are taken relative to the parameter file).");
+  const std::string extension = std::filesystem::path(file).extension().string();
+  if (extension != ".geo" && extension != ".msh")
+    throw InputError("Mesh/file = '" + given.string() + "': unknown extension '" + extension +
+                     "'; allowed are .geo (meshed by gmsh) and .msh (a gmsh mesh).");
+  const std::string given_parameters = prm.get("geo parameters");
   geo_parameters.clear();
-  for (const auto& pair : Utilities::split_string_list(prm.get("geo parameters"), ','))
+  for (const auto& pair : Utilities::split_string_list(given_parameters, ','))
   {
     const std::vector<std::string> name_and_value = Utilities::split_string_list(pair, ':');
     geo_parameters[name_and_value[0]]             = Utilities::string_to_double(name_and_value[1]);
   }
   prm.leave_subsection();
+
+  if (geo_parameters.empty())
+    return;
+  if (extension == ".msh")
+    throw InputError("Mesh/geo parameters = '" + given_parameters + "': Mesh/file = '" +
+                     given.string() +
+                     "' is a finished mesh and takes no parameters; they apply to .geo files.");
+  const std::vector<std::string> known = geo_file_parameters(file);
+  for (const auto& [name, value] : geo_parameters)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+    {
+      std::string names;
+      for (const std::string& known_name : known)
+        names += (names.empty() ? "" : ", ") + known_name;
+      throw InputError("Mesh/geo parameters = '" + given_parameters + "': '" + given.string() +
+                       "' has no parameter '" + name +
+                       "'; its parameters are: " + (names.empty() ? "none" : names) + ".");
+    }
 }
 
 void BodyParameters::declare_parameters(ParameterHandler& prm)
@@ -363,7 +449,8 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
 
 unsigned int TimeIntegrationParameters::n_steps() const
 {
-  return static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9));
+  // At least one: an end time below 1e-9 of the time step is not a run of zero steps.
+  return std::max(1u, static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9)));
 }
 
 void ContactParameters::declare_parameters(ParameterHandler& prm)
@@ -551,21 +638,53 @@ void GeometryParameters::parse_parameters(ParameterHandler& prm)
   prm.leave_subsection();
   prm.leave_subsection();
 
+  // Positions are compared with a tolerance: a left end typed as 0.3 and a right end computed as
+  // 0.1 + 0.2 = 0.30000000000000004 touch. Within it, bodies touch and are snapped together, so
+  // that the reference gap is exactly zero and contact starts closed; beyond it they overlap.
   for (unsigned int a = 0; a < n_bars; ++a)
     for (unsigned int b = a + 1; b < n_bars; ++b)
-      if (bars[a].left_end < bars[b].right_end() && bars[b].left_end < bars[a].right_end())
+    {
+      const double tolerance = touching_tolerance(bars[a], bars[b]);
+      const double overlap   = std::min(bars[a].right_end(), bars[b].right_end()) -
+                             std::max(bars[a].left_end, bars[b].left_end);
+      if (overlap > tolerance)
         throw InputError(
-            "Geometry: Bar " + std::to_string(a + 1) + " [" + format_number(bars[a].left_end) +
-            ", " + format_number(bars[a].right_end()) + "] and Bar " + std::to_string(b + 1) +
-            " [" + format_number(bars[b].left_end) + ", " + format_number(bars[b].right_end()) +
-            "] overlap at t = 0; bars may touch but not overlap.");
-  if (wall_enabled)
-    for (unsigned int bar = 0; bar < n_bars; ++bar)
-      if (bars[bar].right_end() > wall_position)
-        throw InputError("Geometry/Rigid wall/position = " + format_number(wall_position) +
-                         " lies inside Bar " + std::to_string(bar + 1) + " (right end " +
-                         format_number(bars[bar].right_end()) +
-                         "); the wall faces -x, so every bar must lie at x <= position.");
+            "Geometry: Bar " + std::to_string(a + 1) + " [" + format_exact(bars[a].left_end) +
+            ", " + format_exact(bars[a].right_end()) + "] and Bar " + std::to_string(b + 1) + " [" +
+            format_exact(bars[b].left_end) + ", " + format_exact(bars[b].right_end()) +
+            "] overlap at t = 0 by " + format_number(overlap) + "; bars may touch (to " +
+            format_number(tolerance) + ", 1e-9 of the shorter element) but not overlap.");
+    }
+  std::vector<unsigned int> x_order(n_bars);
+  std::iota(x_order.begin(), x_order.end(), 0u);
+  std::sort(x_order.begin(),
+            x_order.end(),
+            [this](const unsigned int a, const unsigned int b)
+            { return bars[a].left_end < bars[b].left_end; });
+  for (unsigned int i = 0; i + 1 < n_bars; ++i)
+  {
+    const BarParameters& left = bars[x_order[i]];
+    BarParameters& right      = bars[x_order[i + 1]];
+    if (right.left_end - left.right_end() <= touching_tolerance(left, right))
+      right.left_end = left.right_end();
+  }
+
+  if (!wall_enabled)
+    return;
+  const BarParameters& rightmost = bars[x_order.back()];
+  const double tolerance         = touching_tolerance(rightmost, rightmost, wall_position);
+  // Every bar lies left of the rightmost one's right end: the bars do not overlap.
+  if (rightmost.right_end() - wall_position > tolerance)
+    throw InputError("Geometry/Rigid wall/position = " + format_exact(wall_position) +
+                     " is left of the right end " + format_exact(rightmost.right_end()) +
+                     " of Bar " + std::to_string(x_order.back() + 1) + " [" +
+                     format_exact(rightmost.left_end) + ", " + format_exact(rightmost.right_end()) +
+                     "], which reaches " + format_number(rightmost.right_end() - wall_position) +
+                     " past it; the wall faces -x, so every bar must lie at x <= position "
+                     "(touching, to " +
+                     format_number(tolerance) + " = 1e-9 of an element, is allowed).");
+  if (wall_position - rightmost.right_end() <= tolerance)
+    wall_position = rightmost.right_end();
 }
 
 void OutputParameters::declare_parameters(ParameterHandler& prm)

@@ -32,12 +32,14 @@ public:
   void create_triangulation(Triangulation<2>& triangulation) override;
   std::vector<BodyMaterial> body_materials() const override;
   std::unique_ptr<Kinematics<2>> create_kinematics() const override;
+  /** Body b's `Initial velocity` at X; throws InputError if it is not finite there. */
   Tensor<1, 2> initial_velocity(types::material_id body, const Point<2>& X) const override;
   /** None: the contact of two bodies has current normals, see create_surface_contact(). */
   std::vector<ContactPair<2>> contact_pairs(const NodeIndex<2>& nodes) const override;
   /**
    * With two bodies: node-to-node contact between their sphere surfaces (boundary ids
-   * SphereMeshIds::surface(0) and (1)), which must have matching facing nodes; the penalty
+   * SphereMeshIds::surface(0) and (1)), which must have matching facing nodes and must not
+   * overlap (they may touch, to touching_tolerance(), and then start closed); the penalty
    * stiffness of a pair is Contact/penalty factor times E / h_min times its contact area (E of the
    * stiffer body, h_min the shortest cell edge). With one body: null. More than two bodies are
    * rejected (InputError).
@@ -61,7 +63,8 @@ public:
   /**
    * For a Hertz impact: measures the contact force history (measure_impact()) and writes
    * impact_summary.csv, the peak force, its time, contact start, end and duration, impulse and
-   * ringing next to Hertz's values and the relative differences.
+   * ringing next to Hertz's values and the relative differences. A run of one step has nothing
+   * to measure: it writes nothing and says so.
    */
   void summarize_run(const std::string& directory,
                      const History& history,
@@ -69,14 +72,21 @@ public:
   /**
    * Hertz's theory of this impact if it applies: two spheres of equal radius and equal material
    * constants whose centres approach along the axis with the initial velocities given (evaluated at
-   * the centres); first touch at (distance of the centres - 2 R) / approach speed. Empty otherwise
-   * (one body, other shapes, dissimilar spheres, spheres not approaching). Valid after
-   * create_triangulation().
+   * the centres); first touch at (distance of the centres - 2 R) / approach speed, at t = 0 if
+   * they touch to touching_tolerance(). Empty otherwise (one body, other shapes, dissimilar
+   * spheres, overlapping spheres, spheres not approaching). Valid after create_triangulation().
    */
   std::optional<HertzImpactOfIdenticalSpheres> hertz_reference() const;
   void print_summary(std::ostream& out, double time_step) const override;
 
 private:
+  /**
+   * How close surfaces count as touching at t = 0: 1e-9 of the shortest cell edge, and at least
+   * the round-off of the positions (8 units in the last place of the largest |z| of a sphere).
+   * Valid after create_triangulation().
+   */
+  double touching_tolerance() const;
+
   /** Dilatational wave speed sqrt((lambda + 2 mu) / rho) of body b. */
   double dilatational_wave_speed(unsigned int body) const;
 

@@ -32,10 +32,4 @@ struct CommandLine
   /** The --help text. */
   static std::string usage();
 };
-
-/**
- * Creates `directory` (and parents) if needed and checks that a file can be written in it;
- * throws InputError naming Output/directory otherwise.
- */
-void prepare_output_directory(const std::string& directory);
 } // namespace dyncontact

@@ -63,11 +63,14 @@ struct SphereGeometry
  * with the attached manifolds supplies the curvature) after its parameters are set: every key of
  * `geo_parameters` must be a number the file declares as
  * `DefineConstant[key = {default, Name "Parameters/key"}]`, the same name as for
- * `gmsh -setnumber key value`. The mesh goes through a unique temporary `.msh` file, removed
- * afterwards. A `.msh` file (gmsh format 2 or 4, ASCII) is read directly and takes no parameters.
- * Either way deal.II's GridIn::read_msh() reads the mesh, and gmsh prints nothing. gmsh is global
- * state, so no other thread may use it meanwhile; every MPI rank may call this function, each
- * meshes on its own (gmsh is deterministic, so all get the same mesh).
+ * `gmsh -setnumber key value` (see geo_file_parameters()). A `.msh` file (any format gmsh reads)
+ * takes no parameters; it is read by the gmsh library, and if its elements are of higher order
+ * (e.g. 9-node quadrilaterals from `gmsh -2 -order 2`) they are reduced to first order on the
+ * same vertices, the curvature again coming from the mapping. Either way the first-order mesh
+ * goes through a unique temporary `.msh` file, removed afterwards, which deal.II's
+ * GridIn::read_msh() reads; gmsh prints nothing. gmsh is global state, so no other thread may use
+ * it meanwhile; every MPI rank may call this function, each meshes on its own (gmsh is
+ * deterministic, so all get the same mesh).
  *
  * With bodies b = 0, 1, ... the mesh must lie in r = x >= 0 and carry the physical groups of
  * meshes/sphere.geo: physical surface b + 1 holds the cells of body b (they get material id b),
@@ -77,14 +80,22 @@ struct SphereGeometry
  * manifold ids are those of SphereMeshIds: a SphericalManifold about each sphere's centre on its
  * surface faces, flat axis faces, a TransfiniteInterpolationManifold on the cells.
  *
- * It is not a general mesh reader: meshes with triangles, without these physical groups, or with
- * other boundaries are rejected. Any problem with the file throws InputError naming the file
- * (a missing or unreadable file, an unknown extension or parameter, gmsh's or deal.II's complaint
- * about its content condensed into one line, no cells, non-quadrilateral cells, a missing or
- * unexpected physical group, a surface that is not a sphere on the axis); the triangulation is
- * then left empty.
+ * It is not a general mesh reader: meshes with triangles or other non-quadrilateral cells,
+ * without these physical groups, or with other boundaries are rejected. Any problem with the file
+ * throws InputError naming the file (a missing or unreadable file, an unknown extension or
+ * parameter, gmsh's or deal.II's complaint about its content condensed into one line, no cells,
+ * non-quadrilateral cells with their gmsh element types, a missing or unexpected physical group, a
+ * surface that is not a sphere on the axis); the triangulation is then left empty.
  */
 std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
                                            const std::map<std::string, double>& geo_parameters,
                                            Triangulation<2>& triangulation);
+
+/**
+ * The names of the parameters that the `.geo` file `geo_file` declares for setting from outside
+ * (`DefineConstant[name = {default, Name "Parameters/name"}]`), sorted: the keys that
+ * read_gmsh_mesh() accepts in `geo_parameters`. gmsh reads the file without meshing it; if it
+ * cannot, InputError names the file and gmsh's complaint.
+ */
+std::vector<std::string> geo_file_parameters(const std::string& geo_file);
 } // namespace dyncontact

@@ -43,11 +43,18 @@ public:
   /**
    * Pairs the facing nodes of `surface_a` (body A) and `surface_b` (body B). A pair's penalty
    * stiffness is `penalty_stiffness_per_area` times its reference contact area.
+   *
+   * The bodies may touch at t = 0 but not overlap. Two paired nodes closer than
+   * `touching_tolerance` are the same point: the pair's node B is given node A's position, so
+   * that its reference gap is exactly zero, whatever the normal, and the pair starts closed. A
+   * pair whose reference gap is below -`touching_tolerance` means that the bodies overlap: the
+   * constructor throws InputError, with the overlap and where it is.
    */
   NodeToNodeContact(ContactSurface<dim> surface_a,
                     ContactSurface<dim> surface_b,
                     double penalty_stiffness_per_area,
-                    double matching_tolerance);
+                    double matching_tolerance,
+                    double touching_tolerance);
 
   /** The candidate pairs, with their reference normals. */
   const std::vector<ContactPair<dim>>& pairs() const { return candidate_pairs; }
@@ -59,11 +66,16 @@ public:
   std::vector<Tensor<1, dim>> current_normals(const Vector<double>& displacement) const;
 
   /**
-   * The contact pressure at every pair's node of surface A: the pressure field on surface A
-   * consistent with the nodal forces `multipliers` (one per pair, zero for inactive pairs), i.e.
-   * the solution of M p = f with the surface's consistent mass matrix (ContactSurface::mass_matrix)
-   * at `displacement`. Exact for a pressure that the surface's shape functions represent; it also
-   * gives the pressure at the axis node of an axisymmetric model, whose tributary area is zero.
+   * The contact pressure at every pair's node of surface A: the pressure field on the contact
+   * zone consistent with the nodal forces `multipliers` (one per pair, zero for inactive pairs).
+   * The contact zone is the support of the multipliers: the nodes of surface A whose pair has a
+   * nonzero multiplier. The pressure is p = sum over zone nodes j of p_j N_j, with N_j the
+   * surface's shape functions, and solves M_zz p_z = f_z, the rows and columns of the zone in the
+   * surface's consistent mass matrix (ContactSurface::mass_matrix) at `displacement`: the work of
+   * p on every zone node's shape function equals its nodal force. Open pairs (zero multiplier)
+   * carry no pressure: exactly 0. Exact for a pressure that the zone's shape functions represent;
+   * it also gives the pressure at the axis node of an axisymmetric model, whose tributary area is
+   * zero.
    */
   std::vector<double> contact_pressures(const Vector<double>& displacement,
                                         const std::vector<double>& multipliers) const;

@@ -38,7 +38,10 @@ struct TimeIntegrationParameters
   /// a failing step is halved at most this many times (minimum step dt / 2^max_step_cuts)
   unsigned int max_step_cuts;
 
-  /** Number of steps: end time / time step, rounded up (the last step may end past end time). */
+  /**
+   * Number of steps: end time / time step, rounded up (the last step may end past end time), at
+   * least 1.
+   */
   unsigned int n_steps() const;
 
   static void declare_parameters(ParameterHandler& prm);

@@ -1,6 +1,6 @@
 # Runs COMMAND ('|'-separated arguments) and passes only if it fails the way a user should see:
-# a non-zero exit code from main's error handling (not a signal), exactly one line on stderr that
-# matches the regular expression EXPECTED, and no crash or deal.II trace text.
+# exit code 2 (bad input) from main's error handling (not a signal), exactly one line on stderr
+# that matches the regular expression EXPECTED, and no crash or deal.II trace text.
 string(REPLACE "|" ";" command "${COMMAND}")
 execute_process(COMMAND ${command} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
 if(result EQUAL 0)
@@ -8,6 +8,9 @@ if(result EQUAL 0)
 endif()
 if(NOT result MATCHES "^[0-9]+$")
   message(FATAL_ERROR "the program crashed (${result}).\nstderr: ${error}")
+endif()
+if(NOT result EQUAL 2)
+  message(FATAL_ERROR "expected exit code 2 (bad input), got ${result}.\nstderr: ${error}")
 endif()
 if(NOT error MATCHES "${EXPECTED}")
   message(FATAL_ERROR "stderr does not match '${EXPECTED}':\n${error}")

@@ -2,9 +2,10 @@
 
 #include <dyncontact/axisymmetric_mesh_model.h>
 #include <dyncontact/bar_model.h>
-#include <dyncontact/command_line.h>
+#include <dyncontact/output_directory.h>
 
 #include <filesystem>
+#include <fstream>
 #include <gtest/gtest.h>
 #include <numeric>
 #include <sstream>
@@ -49,14 +50,29 @@ RunParameters test_parameters(const std::string& prm_file,
   return parameters;
 }
 
-/** Runs the simulation quietly and removes its output directory. */
+/**
+ * Runs the simulation quietly and removes its output directory, after reading the profiles it
+ * wrote (profile_t<T>.csv, contact_pressure_t<T>.csv) into `profiles` if that is not null.
+ */
 template <int dim>
 std::unique_ptr<Simulation<dim>> run_quietly(const RunParameters& parameters,
-                                             std::unique_ptr<ProblemModel<dim>> model)
+                                             std::unique_ptr<ProblemModel<dim>> model,
+                                             std::map<std::string, std::string>* profiles = nullptr)
 {
   std::ostringstream log;
   auto simulation = std::make_unique<Simulation<dim>>(parameters, std::move(model), log);
   simulation->run();
+  if (profiles != nullptr)
+    for (const auto& entry : std::filesystem::directory_iterator(parameters.output.directory))
+    {
+      const std::string name = entry.path().filename().string();
+      if (name.rfind("profile_t", 0) == 0 || name.rfind("contact_pressure_t", 0) == 0)
+      {
+        std::ostringstream text;
+        text << std::ifstream(entry.path()).rdbuf();
+        (*profiles)[name] = text.str();
+      }
+    }
   std::filesystem::remove_all(parameters.output.directory);
   return simulation;
 }
@@ -80,7 +96,8 @@ MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string
   run.simulation =
       run_quietly<2>(run.parameters,
                      std::make_unique<AxisymmetricMeshModel>(
-                         run.parameters.mesh, run.parameters.bodies, run.parameters.contact));
+                         run.parameters.mesh, run.parameters.bodies, run.parameters.contact),
+                     &run.profiles);
   return run;
 }
 

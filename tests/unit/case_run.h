@@ -5,6 +5,7 @@
 #include <dyncontact/parameters.h>
 #include <dyncontact/simulation.h>
 
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -37,6 +38,8 @@ struct MeshRun
 {
   RunParameters parameters;
   std::unique_ptr<Simulation<2>> simulation;
+  /** The text of every profile_t<T>.csv and contact_pressure_t<T>.csv the run wrote, by name. */
+  std::map<std::string, std::string> profiles;
 
   const History& history() const { return simulation->history(); }
 };
@@ -48,7 +51,10 @@ struct MeshRun
  */
 BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
 
-/** The same for an axisymmetric mesh problem. */
+/**
+ * The same for an axisymmetric mesh problem; the profiles it writes (Output/profile times) are
+ * kept in memory, see MeshRun::profiles.
+ */
 MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
 
 /**

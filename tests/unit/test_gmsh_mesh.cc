@@ -8,6 +8,7 @@
 //    the edge and the element layer at the contact poles, Q2 nodes in the contact radius, no
 //    slender cells, the facing surfaces mirrored;
 //  - all cells quadrilaterals with a positive Jacobian at every Gauss point of the Q2 mapping;
+//  - a second-order .msh file (9-node quadrilaterals) read on its vertices;
 //  - bad input: every kind gives one line of InputError naming the file.
 #include <dyncontact/gmsh_mesh.h>
 
@@ -428,6 +429,41 @@ TEST(GmshMesh, ReadsMshFilesLikeGeoFiles)
   EXPECT_NEAR(body_volume(from_msh, 1), body_volume(from_geo, 1), 1e-12 * body_volume(from_geo, 1));
 }
 
+TEST(GmshMesh, ReadsSecondOrderMshFilesOnTheirVertices)
+{
+  // sphere.geo (Refinement 0) exported with 9-node quadrilaterals, as by `gmsh -2 -order 2`: read
+  // on its vertices, it is the first-order mesh of the same file, cell by cell; the mapping curves
+  // the boundary in both.
+  const ScratchDirectory directory;
+  const std::string msh_file = directory.file("sphere_order_2.msh");
+  gmsh::initialize(0, nullptr, false);
+  gmsh::option::setNumber("General.Terminal", 0);
+  gmsh::open(sphere_geo);
+  gmsh::option::setNumber("Mesh.RecombineAll", 1);
+  gmsh::model::mesh::generate(2);
+  gmsh::model::mesh::setOrder(2);
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types, 2);
+  gmsh::write(msh_file);
+  gmsh::finalize();
+  ASSERT_EQ(types, std::vector<int>{10}); // gmsh's 9-node quadrilateral
+
+  Triangulation<2> from_msh, from_geo;
+  read_gmsh_mesh(msh_file, {}, from_msh);
+  read_gmsh_mesh(sphere_geo, {}, from_geo);
+  ASSERT_EQ(from_msh.n_active_cells(), from_geo.n_active_cells());
+  ASSERT_EQ(from_msh.n_vertices(), from_geo.n_vertices());
+  for (auto msh_cell = from_msh.begin_active(), geo_cell = from_geo.begin_active();
+       msh_cell != from_msh.end();
+       ++msh_cell, ++geo_cell)
+  {
+    EXPECT_EQ(msh_cell->material_id(), geo_cell->material_id());
+    for (const unsigned int v : msh_cell->vertex_indices())
+      EXPECT_LT(msh_cell->vertex(v).distance(geo_cell->vertex(v)), 1e-12);
+  }
+  EXPECT_NEAR(body_volume(from_msh, 0), body_volume(from_geo, 0), 1e-12 * body_volume(from_geo, 0));
+}
+
 TEST(GmshMesh, BadInputGivesOneLineNamingTheFile)
 {
   const ScratchDirectory directory;
@@ -472,7 +508,16 @@ TEST(GmshMesh, BadInputGivesOneLineNamingTheFile)
   expect_input_error(
       directory.write("triangles.msh", unit_square_msh("2\n1 2 2 1 1 1 2 3\n2 2 2 1 1 1 3 4\n")),
       {},
-      "not quadrilaterals");
+      "2 of its 2 cells are not quadrilaterals (2 'Triangle 3')");
+  // A 6-node (second-order) triangle and a quadrilateral.
+  expect_input_error(directory.write("mixed.msh",
+                                     "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+                                     "$Nodes\n7\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
+                                     "5 0.5 0 0\n6 0.5 0.5 0\n7 0 0.5 0\n$EndNodes\n"
+                                     "$Elements\n2\n1 9 2 1 1 1 2 4 5 6 7\n"
+                                     "2 3 2 1 1 2 3 4 1\n$EndElements\n"),
+                     {},
+                     "1 of its 2 cells are not quadrilaterals (1 'Triangle 6')");
   // Physical surface 2 missing: the only body is tagged 2.
   expect_input_error(directory.write("no_body_1.msh", unit_square_msh("1\n1 3 2 2 1 1 2 3 4\n")),
                      {},
