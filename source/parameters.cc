@@ -44,6 +44,21 @@ double get_positive(ParameterHandler& prm, const std::string& entry, const std::
   return value;
 }
 
+/** Reads a number that must lie in [low, high], naming `section/entry` and the range if not. */
+double get_in_range(ParameterHandler& prm,
+                    const std::string& entry,
+                    const std::string& section,
+                    const double low,
+                    const double high)
+{
+  const double value = prm.get_double(entry);
+  if (!(value >= low && value <= high))
+    throw InputError(section + "/" + entry + " = " + prm.get(entry) +
+                     " is not allowed: it must lie in " + format_number(low) + ".." +
+                     format_number(high) + ".");
+  return value;
+}
+
 /** Splits "A/B/entry=value" into subsection path, entry and value. */
 struct Override
 {
@@ -418,7 +433,7 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry("end time", "30", Patterns::Double(0.), "End of the run [time], > 0.");
   prm.declare_entry("maximum step cuts",
                     "10",
-                    Patterns::Integer(0, 20),
+                    Patterns::Integer(),
                     "Step control [-], 0..20: a step that fails (Newton does not converge, an "
                     "element inverts, or a guard of subsection Guards trips) is retried with half "
                     "the size, at most this many times, i.e. down to time step / 2^cuts; the size "
@@ -443,7 +458,8 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
     throw InputError("Time integration/end time = " + prm.get("end time") +
                      " with time step = " + prm.get("time step") +
                      " asks for more than 1e8 steps; at most 1e8 are allowed.");
-  max_step_cuts = prm.get_integer("maximum step cuts");
+  max_step_cuts =
+      static_cast<unsigned int>(get_in_range(prm, "maximum step cuts", "Time integration", 0, 20));
   prm.leave_subsection();
 }
 
@@ -493,11 +509,17 @@ void NewtonParameters::declare_parameters(ParameterHandler& prm)
                     "after active-set changes [-], 2..1000 (an active-set change needs two). "
                     "Exceeding it stops the run with a "
                     "message; the output written so far is kept.");
-  prm.declare_entry("residual tolerance",
-                    "1e-10",
-                    Patterns::Double(1e-16, 1e-2),
-                    "Newton converges when the residual norm is below this fraction of the sum of "
-                    "the norms of the force terms (inertia, internal, contact) [-], 1e-16..1e-2.");
+  prm.declare_entry(
+      "residual tolerance",
+      "1e-10",
+      Patterns::Double(),
+      "Newton converges when the residual norm is below this fraction of the "
+      "reference force |Q(u)| + |W| + |G^T lambda| (elastic, external and contact "
+      "forces; not the inertia) plus a round-off floor, every active pair is closed to "
+      "this fraction of the smallest cell diameter and compressive, every inactive "
+      "pair open to it, and, with active pairs, after at least one linear solve "
+      "[-], 1e-16..1e-6. Looser values are rejected: they leave residuals at the "
+      "contact nodes that break the momentum balance (1e-6 relative) of a step.");
   prm.leave_subsection();
 }
 
@@ -505,7 +527,7 @@ void NewtonParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Newton");
   max_iterations     = prm.get_integer("maximum iterations");
-  residual_tolerance = prm.get_double("residual tolerance");
+  residual_tolerance = get_in_range(prm, "residual tolerance", "Newton", 1e-16, 1e-6);
   prm.leave_subsection();
 }
 
@@ -520,7 +542,7 @@ void GuardParameters::declare_parameters(ParameterHandler& prm)
                     "energy). A rejected step is cut (Time integration/maximum step cuts).");
   prm.declare_entry("energy tolerance",
                     "1e-4",
-                    Patterns::Double(0., 1.),
+                    Patterns::Double(),
                     "Allowed energy gain, relative to the largest energy of the run [-], 0..1.");
   prm.declare_entry("tensile force",
                     "true",
@@ -528,7 +550,7 @@ void GuardParameters::declare_parameters(ParameterHandler& prm)
                     "Reject a step whose recovered total contact force is tensile.");
   prm.declare_entry("tensile force tolerance",
                     "1e-4",
-                    Patterns::Double(0., 1.),
+                    Patterns::Double(),
                     "Allowed tension, relative to the largest contact force of the run (or the sum "
                     "of the step's |multipliers|) [-], 0..1.");
   prm.declare_entry("momentum",
@@ -539,7 +561,7 @@ void GuardParameters::declare_parameters(ParameterHandler& prm)
                     "external forces.");
   prm.declare_entry("momentum tolerance",
                     "1e-6",
-                    Patterns::Double(0., 1.),
+                    Patterns::Double(),
                     "Allowed difference, relative to the largest total momentum of the run "
                     "[-], 0..1.");
   prm.leave_subsection();
@@ -549,11 +571,11 @@ void GuardParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Guards");
   energy                  = prm.get_bool("energy");
-  energy_tolerance        = prm.get_double("energy tolerance");
+  energy_tolerance        = get_in_range(prm, "energy tolerance", "Guards", 0., 1.);
   tensile_force           = prm.get_bool("tensile force");
-  tensile_force_tolerance = prm.get_double("tensile force tolerance");
+  tensile_force_tolerance = get_in_range(prm, "tensile force tolerance", "Guards", 0., 1.);
   momentum                = prm.get_bool("momentum");
-  momentum_tolerance      = prm.get_double("momentum tolerance");
+  momentum_tolerance      = get_in_range(prm, "momentum tolerance", "Guards", 0., 1.);
   prm.leave_subsection();
 }
 

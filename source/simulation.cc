@@ -93,6 +93,9 @@ void Simulation<dim>::setup()
   dof_body.assign(dof_handler.n_dofs(), 0);
   dof_direction.assign(dof_handler.n_dofs(), 0.);
   is_contact_dof.assign(dof_handler.n_dofs(), false);
+  is_fixed_dof.assign(dof_handler.n_dofs(), false);
+  for (const auto dof : fixed_dofs)
+    is_fixed_dof[dof] = true;
   for (const auto& node : nodes->nodes())
     for (unsigned int d = 0; d < dim; ++d)
     {
@@ -234,11 +237,25 @@ void Simulation<dim>::restore(const State& state)
 template <int dim>
 std::vector<double> Simulation<dim>::body_forces() const
 {
+  // The nodes of the active pairs carry the contact force; elsewhere M a + Q - W is only the
+  // Newton residual, whose sum over a body balance_body_momenta() has removed.
+  std::vector<bool> in_active_pair(dof_handler.n_dofs(), false);
+  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
+    if (contact->is_active(k))
+    {
+      const ContactPair<dim>& pair = contact->candidate_pairs()[k];
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        in_active_pair[pair.node_a.dofs[d]] = true;
+        if (!pair.against_wall())
+          in_active_pair[pair.node_b->dofs[d]] = true;
+      }
+    }
   std::vector<double> forces(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
     double force = external_force[i];
-    if (is_contact_dof[i])
+    if (in_active_pair[i])
       force += mass[i] * acceleration[i] + internal_force[i] - external_force[i];
     forces[dof_body[i]] += dof_direction[i] * force;
   }
@@ -281,9 +298,10 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   external_force    = loads->force(time);
   const auto report = solver->solve(
       predictor, newmark.inertia_factor(), external_force, last_configuration, increment);
+  internal_force = solver->internal_force();
+  balance_body_momenta(increment);
   displacement = predictor;
   displacement += increment;
-  internal_force = solver->internal_force();
   newmark.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
   if (newmark.scheme() == NewmarkScheme::modified)
     contact->apply_rate_correction(
@@ -294,6 +312,31 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
         acceleration);
   accumulate_impulses(before);
   return report.linear_solves;
+}
+
+template <int dim>
+void Simulation<dim>::balance_body_momenta(Vector<double>& increment) const
+{
+  // The residual r = c M (u - u~) + Q(u) - W - G^T lambda left within the Newton tolerance, summed
+  // over a body along the impact direction, is a momentum error of the step; a rigid translation
+  // t of the body along that direction changes only the inertia term (Q is invariant, W and
+  // G^T lambda do not depend on it), by c t sum m. Choosing t to cancel the sum makes the step
+  // conserve momentum exactly; t is the residual over c M, far below the gap tolerance.
+  Vector<double> contact_force(dof_handler.n_dofs());
+  contact->add_contact_forces(contact_force);
+  const double c = newmark.inertia_factor();
+  std::vector<double> residual_sum(model->n_bodies(), 0.), inertia_sum(model->n_bodies(), 0.);
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    if (!is_fixed_dof[i] && dof_direction[i] != 0.)
+    {
+      const double residual =
+          c * mass[i] * increment[i] + internal_force[i] - external_force[i] - contact_force[i];
+      residual_sum[dof_body[i]] += dof_direction[i] * residual;
+      inertia_sum[dof_body[i]] += c * mass[i] * dof_direction[i] * dof_direction[i];
+    }
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    if (!is_fixed_dof[i] && dof_direction[i] != 0.)
+      increment[i] -= residual_sum[dof_body[i]] / inertia_sum[dof_body[i]] * dof_direction[i];
 }
 
 template <int dim>
@@ -456,8 +499,7 @@ void Simulation<dim>::write_reference_and_summary()
       values.push_back(step_history.value(row, name));
     nominal_history.add_row(values);
   }
-  if (nominal_history.n_rows() >= 3)
-    model->summarize_run(directory, nominal_history, log.get_stream());
+  model->summarize_run(directory, nominal_history, log.get_stream());
 }
 
 template <int dim>

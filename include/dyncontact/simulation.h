@@ -98,10 +98,15 @@ private:
   void setup();
   void warn_about_stability() const;
   void set_initial_conditions();
+  /**
+   * Removes from the converged `increment` the momentum error of each body: a rigid translation
+   * along the impact direction cancels the body's residual summed along it (see the definition).
+   */
+  void balance_body_momenta(Vector<double>& increment) const;
   /** Solves the step from `before` to `time` with the Newmark step size; throws SolverFailure. */
   unsigned int do_time_step(const State& before);
   /**
-   * Per body, the force along the impact direction on its contact-candidate nodes (M a + Q - W)
+   * Per body, the force along the impact direction on the nodes of its active pairs (M a + Q - W)
    * plus its total external force, at the current state: with sum Q = 0 over a free body this is
    * the total force that changes its momentum, up to the Newton residual of its other nodes.
    */
@@ -159,6 +164,7 @@ private:
   std::vector<unsigned int> dof_body;
   std::vector<double> dof_direction;
   std::vector<bool> is_contact_dof;     ///< a DoF of a node of some candidate pair
+  std::vector<bool> is_fixed_dof;       ///< held at zero (fixed_dofs)
   std::vector<double> forces_on_bodies; ///< body_forces() at the current state
   std::vector<double> impulses;         ///< per body, accumulated since t = 0
   double external_work = 0.;            ///< work of the external forces since t = 0
