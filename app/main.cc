@@ -3,6 +3,7 @@
 #include <dyncontact/axisymmetric_mesh_model.h>
 #include <dyncontact/bar_model.h>
 #include <dyncontact/command_line.h>
+#include <dyncontact/interruption.h>
 #include <dyncontact/output_directory.h>
 #include <dyncontact/parameters.h>
 #include <dyncontact/setup_check.h>
@@ -10,6 +11,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -65,10 +67,19 @@ int main(int argc, char** argv)
     {
       const ParameterReader reader(command_line.parameter_file, command_line.overrides);
       const RunParameters& parameters = reader.parameters();
+      const std::string& resume       = command_line.resume_directory;
       on_root_rank(
           [&]
           {
             const std::string& directory = parameters.output.directory;
+            if (!resume.empty())
+            {
+              if (!std::filesystem::exists(resume + "/checkpoint.bin"))
+                throw InputError("--resume " + resume + ": there is no checkpoint " + resume +
+                                 "/checkpoint.bin (a run writes one when interrupted or every "
+                                 "Output/checkpoint interval steps).");
+              return; // the interrupted run's results stay; the resumed run continues them
+            }
             prepare_output_directory(directory);
             // The run owns its directory: no result of an earlier run may pass for one of it.
             const unsigned int n_removed = remove_previous_results(directory);
@@ -82,13 +93,13 @@ int main(int argc, char** argv)
         Simulation<1>(parameters,
                       std::make_unique<BarModel>(parameters.geometry, parameters.contact),
                       std::cout)
-            .run();
+            .run(resume);
       else
         Simulation<2>(parameters,
                       std::make_unique<AxisymmetricMeshModel>(
                           parameters.mesh, parameters.bodies, parameters.contact),
                       std::cout)
-            .run();
+            .run(resume);
       return 0;
     }
     }
@@ -98,6 +109,18 @@ int main(int argc, char** argv)
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::cerr << "dyncontact: error: " << error.what() << std::endl;
     return 2;
+  }
+  catch (const RunInterrupted& interruption)
+  {
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      const CommandLine command_line =
+          CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
+      std::cerr << "dyncontact: interrupted by " << interruption.what()
+                << "; resume with: dyncontact " << command_line.parameter_file << " --resume "
+                << interruption.directory() << std::endl;
+    }
+    return 128 + interruption.signal();
   }
   catch (const SolverFailure& error)
   {

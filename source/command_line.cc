@@ -36,6 +36,12 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
       command_line.overrides.push_back(value_of(i));
     else if (argument == "--output")
       command_line.overrides.push_back("Output/directory=" + value_of(i));
+    else if (argument == "--resume")
+    {
+      // The resumed run continues in the interrupted run's directory.
+      command_line.resume_directory = value_of(i);
+      command_line.overrides.push_back("Output/directory=" + command_line.resume_directory);
+    }
     else if (!argument.empty() && argument[0] == '-')
       throw InputError("unknown option '" + argument + "'; see --help.");
     else if (command_line.parameter_file.empty())
@@ -65,6 +71,8 @@ std::string CommandLine::usage()
          "  dyncontact FILE.prm [--set \"Section/entry=value\"]... [--output DIR]\n"
          "      run the problem; every --set overrides one entry of FILE.prm (repeatable),\n"
          "      --output DIR is short for --set \"Output/directory=DIR\".\n"
+         "  dyncontact FILE.prm --resume DIR [--set ...]\n"
+         "      continue the interrupted run of FILE.prm from DIR/checkpoint.bin, in DIR.\n"
          "  dyncontact --validate FILE.prm [--set ...]\n"
          "      check the parameters and the mesh as a run does before its first step, run\n"
          "      nothing, write nothing.\n"

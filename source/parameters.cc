@@ -726,6 +726,14 @@ void OutputParameters::declare_parameters(ParameterHandler& prm)
                     "10",
                     Patterns::Integer(0),
                     "Write VTU fields (with a PVD record) every this many steps [-]; 0 = never.");
+  prm.declare_entry("checkpoint interval",
+                    "0",
+                    Patterns::Integer(),
+                    "Write checkpoint.bin (the whole state: u, v, a, multipliers, active set, step "
+                    "size, time, history) every this many steps [-], 0..1e8; 0 = only when the run "
+                    "is interrupted (SIGINT or SIGTERM finish the current step, write a checkpoint "
+                    "and stop). `dyncontact FILE.prm --resume DIR` continues from it; the history "
+                    "equals that of an uninterrupted run.");
   prm.declare_entry("write exact solution",
                     "true",
                     Patterns::Bool(),
@@ -744,7 +752,9 @@ void OutputParameters::parse_parameters(ParameterHandler& prm)
   profile_times.clear();
   for (const auto& time : Utilities::split_string_list(prm.get("profile times")))
     profile_times.push_back(Utilities::string_to_double(time));
-  vtu_interval         = prm.get_integer("vtu interval");
+  vtu_interval = prm.get_integer("vtu interval");
+  checkpoint_interval =
+      static_cast<unsigned int>(get_in_range(prm, "checkpoint interval", "Output", 0., 1e8));
   write_exact_solution = prm.get_bool("write exact solution");
   prm.leave_subsection();
 }

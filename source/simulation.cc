@@ -1,5 +1,5 @@
+#include <dyncontact/interruption.h>
 #include <dyncontact/simulation.h>
-#include <dyncontact/step_controller.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_q.h>
@@ -7,9 +7,14 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <algorithm>
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 #include <iomanip>
+#include <sstream>
 
 namespace dyncontact
 {
@@ -302,6 +307,7 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   balance_body_momenta(increment);
   displacement = predictor;
   displacement += increment;
+  contact->update_geometry(displacement);
   newmark.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
   if (newmark.scheme() == NewmarkScheme::modified)
     contact->apply_rate_correction(
@@ -503,7 +509,101 @@ void Simulation<dim>::write_reference_and_summary()
 }
 
 template <int dim>
-void Simulation<dim>::run()
+std::string Simulation<dim>::problem_fingerprint() const
+{
+  std::ostringstream text;
+  text << std::setprecision(17) << "dimension " << dim << ", " << dof_handler.n_dofs() << " DoFs, "
+       << contact->n_pairs() << " contact candidates, " << model->n_bodies() << " bodies, dt "
+       << parameters.time.time_step << ", beta " << newmark.beta() << ", gamma " << newmark.gamma()
+       << ", " << (newmark.scheme() == NewmarkScheme::modified ? "modified" : "classical") << ", "
+       << (parameters.contact.formulation == ContactFormulation::penalty ? "penalty"
+                                                                         : "Lagrange multiplier");
+  return text.str();
+}
+
+template <int dim>
+template <class Archive>
+void Simulation<dim>::serialize_state(Archive& archive)
+{
+  typename ContactConstraints<dim>::State contact_state = contact->state();
+  double tangent_scale                                  = solver->tangent_scale();
+  archive& time;
+  archive& displacement;
+  archive& velocity;
+  archive& acceleration;
+  archive& internal_force;
+  archive& external_force;
+  archive& contact_state.active;
+  archive& contact_state.multipliers;
+  archive& forces_on_bodies;
+  archive& impulses;
+  archive& external_work;
+  archive&* controller;
+  archive& guards;
+  archive& step_history;
+  archive& nominal_rows;
+  archive& counters.total_solves;
+  archive& counters.total_cuts;
+  archive& counters.steps_taken;
+  archive& counters.cut_places;
+  archive& tangent_scale;
+  archive&* field_output;
+  if (Archive::is_loading::value)
+  {
+    contact->restore(contact_state);
+    contact->update_geometry(displacement);
+    solver->set_tangent_scale(tangent_scale);
+  }
+}
+
+template <int dim>
+void Simulation<dim>::write_checkpoint()
+{
+  if (!is_root_rank)
+    return;
+  TimerOutput::Scope scope(timer, "output");
+  const std::string file = parameters.output.directory + "/checkpoint.bin";
+  {
+    std::ofstream stream(file + ".tmp", std::ios::binary);
+    boost::archive::binary_oarchive archive(stream);
+    std::string fingerprint = problem_fingerprint();
+    archive << fingerprint;
+    serialize_state(archive);
+    if (!stream)
+      throw SolverFailure("cannot write the checkpoint " + file + ".tmp");
+  }
+  // Atomic: a run killed while writing leaves the previous checkpoint intact.
+  std::filesystem::rename(file + ".tmp", file);
+}
+
+template <int dim>
+void Simulation<dim>::read_checkpoint(const std::string& directory)
+{
+  const std::string file = directory + "/checkpoint.bin";
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream)
+    throw InputError("--resume " + directory + ": there is no checkpoint " + file +
+                     " (a run writes one when interrupted or every Output/checkpoint interval "
+                     "steps).");
+  try
+  {
+    boost::archive::binary_iarchive archive(stream);
+    std::string fingerprint;
+    archive >> fingerprint;
+    if (fingerprint != problem_fingerprint())
+      throw InputError("--resume " + directory + ": the checkpoint belongs to another problem (" +
+                       fingerprint + ") than this one (" + problem_fingerprint() + ").");
+    serialize_state(archive);
+  }
+  catch (const boost::archive::archive_exception& error)
+  {
+    throw InputError("--resume " + directory + ": " + file + " is not a readable checkpoint (" +
+                     error.what() + ").");
+  }
+}
+
+template <int dim>
+void Simulation<dim>::run(const std::string& resume_directory)
 {
   setup();
   set_initial_conditions();
@@ -511,30 +611,42 @@ void Simulation<dim>::run()
   field_output = std::make_unique<FieldOutput<dim>>(dof_handler, mapping, directory);
   if (dim == 2 && is_root_rank)
     field_output->write_cell_outlines(nodes->nodes());
-  if (is_root_rank)
-    step_history.attach_file(directory + "/history.csv");
-
-  const Measures initial = measure();
-  guards.initialize(guard_figures(initial));
-  record_step(initial, 0, 0, 0);
 
   const double dt = parameters.time.time_step;
-  StepController controller(dt, n_steps, parameters.time.max_step_cuts);
-  unsigned int total_solves = 0, total_cuts = 0, steps_taken = 0;
-  std::vector<std::string> cut_places;
-  const auto wall_start = std::chrono::steady_clock::now();
-  auto last_progress    = wall_start;
-  while (!controller.finished())
+  controller      = std::make_unique<StepController>(dt, n_steps, parameters.time.max_step_cuts);
+  const Measures initial = measure();
+  guards.initialize(guard_figures(initial));
+  if (resume_directory.empty())
+  {
+    if (is_root_rank)
+      step_history.attach_file(directory + "/history.csv");
+    record_step(initial, 0, 0, 0);
+  }
+  else
+  {
+    read_checkpoint(resume_directory);
+    if (is_root_rank)
+      step_history.attach_file(directory + "/history.csv");
+    log << "dyncontact: resumed from " << resume_directory << "/checkpoint.bin at t = " << time
+        << "\n";
+  }
+  install_interrupt_handlers();
+
+  const auto wall_start       = std::chrono::steady_clock::now();
+  auto last_progress          = wall_start;
+  unsigned int steps_this_run = 0;
+  const double start_fraction = time / (n_steps * dt); // of the run, done before this one started
+  while (!controller->finished())
   {
     const State before              = current_state();
-    const unsigned int nominal_step = controller.nominal_step();
+    const unsigned int nominal_step = controller->nominal_step();
     unsigned int linear_solves = 0, cuts = 0;
     std::string failure;
     Measures measures;
     for (;;)
     {
-      newmark.set_time_step(controller.step_size());
-      time    = controller.end_time();
+      newmark.set_time_step(controller->step_size());
+      time    = controller->end_time();
       failure = "";
       try
       {
@@ -555,8 +667,8 @@ void Simulation<dim>::run()
       restore(before);
       while (!failure.empty() && (failure.back() == '.' || failure.back() == ' '))
         failure.pop_back();
-      const double failed_size = controller.step_size();
-      if (!controller.cut())
+      const double failed_size = controller->step_size();
+      if (!controller->cut())
       {
         write_reference_and_summary();
         throw SolverFailure("step " + std::to_string(nominal_step) +
@@ -564,20 +676,21 @@ void Simulation<dim>::run()
                             ", still at the smallest step " + format_number(failed_size) +
                             " (dt / 2^" + std::to_string(parameters.time.max_step_cuts) +
                             ", Time integration/maximum step cuts). Results up to t = " +
-                            format_number(controller.start_time()) + " are in " + directory + ".");
+                            format_number(controller->start_time()) + " are in " + directory + ".");
       }
       ++cuts;
-      ++total_cuts;
-      if (cut_places.size() < 10)
-        cut_places.push_back(format_number(controller.start_time()));
+      ++counters.total_cuts;
+      if (counters.cut_places.size() < 10)
+        counters.cut_places.push_back(format_number(controller->start_time()));
       log << "  step " << nominal_step << " (t = " << time << "): " << failure
-          << "; cutting the step to " << controller.step_size() << "\n";
+          << "; cutting the step to " << controller->step_size() << "\n";
     }
     const auto active_before =
         std::count(before.contact.active.begin(), before.contact.active.end(), true);
-    const bool nominal_time_reached = controller.accept();
-    ++steps_taken;
-    total_solves += linear_solves;
+    const bool nominal_time_reached = controller->accept();
+    ++counters.steps_taken;
+    ++steps_this_run;
+    counters.total_solves += linear_solves;
     record_step(measures, nominal_time_reached ? nominal_step : 0, linear_solves, cuts);
     if (!std::isfinite(step_history.value(step_history.n_rows() - 1, "algorithmic_energy")))
     {
@@ -588,22 +701,38 @@ void Simulation<dim>::run()
                           "are in " +
                           directory + ".");
     }
+    // Every rank stops at the same step, whichever received the signal.
+    const int signal            = Utilities::MPI::max(interrupt_signal(), MPI_COMM_WORLD);
+    const unsigned int interval = parameters.output.checkpoint_interval;
+    if (signal != 0 || (interval > 0 && nominal_time_reached && nominal_step % interval == 0))
+      write_checkpoint();
+    if (signal != 0)
+    {
+      write_reference_and_summary();
+      throw RunInterrupted("signal " + std::to_string(signal) + " at t = " + format_number(time) +
+                               ": checkpoint written to " + directory + "/checkpoint.bin",
+                           signal,
+                           directory);
+    }
+
     const auto now              = std::chrono::steady_clock::now();
     const double since_progress = std::chrono::duration<double>(now - last_progress).count();
     if (static_cast<long>(contact->n_active()) != active_before ||
-        since_progress >= progress_interval || controller.finished())
+        since_progress >= progress_interval || controller->finished())
     {
-      last_progress        = now;
-      const double elapsed = std::chrono::duration<double>(now - wall_start).count();
-      const double done    = time / (n_steps * dt);
+      last_progress              = now;
+      const double elapsed       = std::chrono::duration<double>(now - wall_start).count();
+      const double done          = time / (n_steps * dt);
+      const double done_this_run = std::max(done - start_fraction, 1e-9);
       log << "  step " << std::setw(6) << nominal_step << "/" << n_steps
           << "  t = " << std::setw(10) << time << "  " << std::fixed << std::setprecision(1)
           << std::setw(5) << 100. * done << "%  " << std::setw(7)
-          << steps_taken / std::max(elapsed, 1e-9) << " steps/s  ETA " << std::setw(6)
-          << elapsed * (1. - done) / std::max(done, 1e-9) << " s  " << std::setprecision(2)
-          << static_cast<double>(total_solves) / steps_taken << " solves/step" << std::defaultfloat
-          << std::setprecision(6) << "  active pairs " << contact->n_active() << "  energy "
-          << step_history.value(step_history.n_rows() - 1, "algorithmic_energy") << "\n";
+          << steps_this_run / std::max(elapsed, 1e-9) << " steps/s  ETA " << std::setw(6)
+          << elapsed * (1. - done) / done_this_run << " s  " << std::setprecision(2)
+          << static_cast<double>(counters.total_solves) / counters.steps_taken << " solves/step"
+          << std::defaultfloat << std::setprecision(6) << "  active pairs " << contact->n_active()
+          << "  energy " << step_history.value(step_history.n_rows() - 1, "algorithmic_energy")
+          << "\n";
     }
   }
   write_reference_and_summary();
@@ -611,13 +740,13 @@ void Simulation<dim>::run()
     log << warning << "\n";
   const double wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
-  log << "dyncontact: done, " << n_steps << " steps (" << steps_taken << " taken, " << total_cuts
-      << " step cuts";
-  for (unsigned int c = 0; c < cut_places.size(); ++c)
-    log << (c == 0 ? " at t = " : ", ") << cut_places[c];
-  if (total_cuts > cut_places.size())
+  log << "dyncontact: done, " << n_steps << " steps (" << counters.steps_taken << " taken, "
+      << counters.total_cuts << " step cuts";
+  for (unsigned int c = 0; c < counters.cut_places.size(); ++c)
+    log << (c == 0 ? " at t = " : ", ") << counters.cut_places[c];
+  if (counters.total_cuts > counters.cut_places.size())
     log << ", ...";
-  log << "), " << total_solves << " linear solves, wall time " << wall_time << " s (";
+  log << "), " << counters.total_solves << " linear solves, wall time " << wall_time << " s (";
   const auto phases = timer.get_summary_data(TimerOutput::total_wall_time);
   for (auto phase = phases.begin(); phase != phases.end(); ++phase)
     log << (phase == phases.begin() ? "" : ", ") << phase->first << " " << phase->second << " s";

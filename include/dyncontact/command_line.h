@@ -25,6 +25,7 @@ struct CommandLine
   Action action = Action::help;
   std::string parameter_file;
   std::vector<std::string> overrides; ///< "Section/entry=value", in order; --output adds one
+  std::string resume_directory;       ///< --resume DIR: continue from DIR/checkpoint.bin
 
   /** Throws InputError naming the offending argument. */
   static CommandLine parse(const std::vector<std::string>& arguments);

@@ -92,6 +92,14 @@ public:
   /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */
   const Vector<double>& internal_force() const { return internal_force_values; }
 
+  /**
+   * max diag(K_eff) of the last tangent (0: none yet), which scales the round-off floor and decides
+   * whether a step's first evaluation needs a tangent; a checkpoint keeps it so that a resumed run
+   * repeats the uninterrupted one exactly.
+   */
+  double tangent_scale() const { return largest_tangent_diagonal; }
+  void set_tangent_scale(const double scale) { largest_tangent_diagonal = scale; }
+
   /** Strain energy at the same displacement as internal_force(). */
   double strain_energy() const { return strain_energy_value; }
 

@@ -8,6 +8,9 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
 
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/utility.hpp>
+#include <boost/serialization/vector.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -73,6 +76,13 @@ public:
                      const Vector<double>& displacement,
                      const Vector<double>& velocity,
                      const Vector<double>& acceleration) const;
+
+  /** Writes or reads the list of fields in solution.pvd (checkpoints). */
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int)
+  {
+    archive& pvd_records;
+  }
 
 private:
   const DoFHandler<dim>& dof_handler;

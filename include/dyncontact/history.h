@@ -3,6 +3,7 @@
 #include <dyncontact/global.h>
 
 #include <algorithm>
+#include <boost/serialization/vector.hpp>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -39,6 +40,13 @@ public:
 
   /** Value of column `name` in row `row`. */
   double value(unsigned int row, const std::string& name) const;
+
+  /** Writes or reads the rows (checkpoints; attach the file after reading). */
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int)
+  {
+    archive& rows;
+  }
 
 private:
   unsigned int column_index(const std::string& name) const;

@@ -126,6 +126,8 @@ struct OutputParameters
   std::string directory;
   std::vector<double> profile_times;
   unsigned int vtu_interval;
+  /// write checkpoint.bin every this many nominal steps (0: only when interrupted)
+  unsigned int checkpoint_interval;
   bool write_exact_solution;
 
   static void declare_parameters(ParameterHandler& prm);

@@ -10,6 +10,7 @@
 #include <dyncontact/node_index.h>
 #include <dyncontact/parameters.h>
 #include <dyncontact/problem_model.h>
+#include <dyncontact/step_controller.h>
 #include <dyncontact/step_guards.h>
 #include <dyncontact/surface_tractions.h>
 
@@ -53,10 +54,13 @@ public:
              std::ostream& log);
 
   /**
-   * Runs from t = 0 to the end time. Output/directory must exist. Throws SolverFailure if a step
-   * cannot be solved; everything recorded up to that step is already on disk.
+   * Runs from t = 0 (or, with a `resume_directory`, from the checkpoint.bin written there) to the
+   * end time. Output/directory must exist. Throws SolverFailure if a step cannot be solved,
+   * InputError if the checkpoint is missing or belongs to another problem, and RunInterrupted
+   * after writing a checkpoint when SIGINT or SIGTERM arrived; everything recorded up to that
+   * step is already on disk.
    */
-  void run();
+  void run(const std::string& resume_directory = "");
 
   /** The recorded history, one row per step including t = 0. */
   const History& history() const { return step_history; }
@@ -124,6 +128,23 @@ private:
                    unsigned int cuts);
   /** Writes the reference solution at the recorded times and the run's summary. */
   void write_reference_and_summary();
+
+  /** What must match between a checkpoint and the run that resumes it, as readable text. */
+  std::string problem_fingerprint() const;
+  /** Writes or reads everything a resumed run needs to repeat the uninterrupted one exactly. */
+  template <class Archive>
+  void serialize_state(Archive& archive);
+  /** Writes Output/directory/checkpoint.bin atomically (rank 0). */
+  void write_checkpoint();
+  /** Reads `directory`/checkpoint.bin; throws InputError if missing or of another problem. */
+  void read_checkpoint(const std::string& directory);
+
+  /** Counters for the progress line and the summary. */
+  struct Counters
+  {
+    unsigned int total_solves = 0, total_cuts = 0, steps_taken = 0;
+    std::vector<std::string> cut_places; ///< times of the first cuts
+  };
   /** Q(u) - W at the last solve: what the contact force balances at a node. */
   Vector<double> net_internal_force() const;
   /** The nodal traction -p n on body A and p n on body B of every pair, p = `pressures`. */
@@ -173,5 +194,7 @@ private:
   /** Rows of step_history on the nominal time grid (the Hertz comparison needs uniform steps). */
   std::vector<unsigned int> nominal_rows;
   TimerOutput timer;
+  std::unique_ptr<StepController> controller;
+  Counters counters;
 };
 } // namespace dyncontact

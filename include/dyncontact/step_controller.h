@@ -47,6 +47,13 @@ public:
   /** The next step failed: halves its size. Returns false (and changes nothing) at the minimum. */
   bool cut();
 
+  /** Writes or reads the position (checkpoints); the nominal grid comes from the constructor. */
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int)
+  {
+    archive& nominal_index& position& level& accepted_at_level;
+  }
+
 private:
   /** Units of dt / 2^max_cuts in a step at the current level. */
   std::uint64_t units_per_step() const { return std::uint64_t(1) << (max_cuts - level); }

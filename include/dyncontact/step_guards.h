@@ -4,6 +4,8 @@
 #include <dyncontact/parameters.h>
 
 #include <array>
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -67,6 +69,15 @@ public:
 
   /** One line per guard switched off that was violated: where first, and its largest amount. */
   std::vector<std::string> warnings() const;
+
+  /** Writes or reads the references and records (checkpoints). */
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int)
+  {
+    archive& initial_energy& energy_scale& force_scale& momentum_scale& initial_momenta;
+    for (Record& record : disabled_violations)
+      archive& record.first_reason& record.first_time& record.largest;
+  }
 
 private:
   enum Guard

@@ -1,0 +1,53 @@
+# Checkpoint and restart (issue 10, D): a run interrupted mid-contact and resumed must write a
+# history.csv equal, byte for byte, to that of the uninterrupted run. LAUNCH is an optional
+# '|'-separated launcher (mpirun -np 2), OPTIONS the run's '|'-separated arguments; CHECKPOINT_STEP
+# the step at which Output/checkpoint interval writes the checkpoint (mid-contact).
+# 1. the uninterrupted run, writing a checkpoint every CHECKPOINT_STEP steps;
+# 2. the interrupted one: the same run stopped by SIGTERM (timeout) if SIGNAL is set, or else the
+#    uninterrupted run's directory cut back to its checkpoint (history.csv removed, so the resumed
+#    run must rebuild it from the checkpoint);
+# 3. --resume on it, and the two history files compared;
+# 4. if OTHER_PRM is set, --resume of that problem on the checkpoint must be refused (exit 2).
+string(REPLACE "|" ";" launch "${LAUNCH}")
+string(REPLACE "|" ";" options "${OPTIONS}")
+file(REMOVE_RECURSE "${DIRECTORY}")
+execute_process(COMMAND ${launch} ${EXECUTABLE} ${options} --output ${DIRECTORY}/uninterrupted
+                        --set "Output/checkpoint interval=${CHECKPOINT_STEP}"
+                RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
+if(NOT result EQUAL 0)
+  message(FATAL_ERROR "the uninterrupted run failed (${result}): ${error}")
+endif()
+if(SIGNAL)
+  execute_process(COMMAND timeout --preserve-status -s TERM ${SIGNAL} ${launch} ${EXECUTABLE}
+                          ${options} --output ${DIRECTORY}/interrupted
+                  RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
+  if(result EQUAL 0)
+    message(FATAL_ERROR "the run finished within ${SIGNAL} s, before SIGTERM; lengthen it")
+  endif()
+  if(NOT error MATCHES "interrupted by signal 15 at t = .*resume with: dyncontact .* --resume ")
+    message(FATAL_ERROR "no resume line after SIGTERM (exit ${result}):\n${error}")
+  endif()
+else()
+  file(COPY ${DIRECTORY}/uninterrupted/ DESTINATION ${DIRECTORY}/interrupted)
+  file(REMOVE ${DIRECTORY}/interrupted/history.csv)
+endif()
+execute_process(COMMAND ${launch} ${EXECUTABLE} ${options} --resume ${DIRECTORY}/interrupted
+                RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
+if(NOT result EQUAL 0 OR NOT output MATCHES "resumed from .* at t = ")
+  message(FATAL_ERROR "the resumed run failed (${result}): ${error}\n${output}")
+endif()
+execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${DIRECTORY}/uninterrupted/history.csv
+                        ${DIRECTORY}/interrupted/history.csv RESULT_VARIABLE differ)
+if(NOT differ EQUAL 0)
+  message(FATAL_ERROR "history.csv of the resumed run differs from the uninterrupted run's")
+endif()
+if(OTHER_PRM)
+  # A checkpoint of another problem: one line, exit 2.
+  execute_process(COMMAND ${EXECUTABLE} ${OTHER_PRM} --resume ${DIRECTORY}/interrupted
+                  RESULT_VARIABLE result ERROR_VARIABLE error OUTPUT_QUIET)
+  if(NOT result EQUAL 2 OR NOT error MATCHES "checkpoint belongs to another problem")
+    message(FATAL_ERROR "resuming another problem's checkpoint: exit ${result}, ${error}")
+  endif()
+endif()
+string(REGEX MATCH "resumed from [^\n]*" resumed "${output}")
+message(STATUS "identical histories; ${resumed}")
