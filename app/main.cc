@@ -90,16 +90,23 @@ int main(int argc, char** argv)
             reader.write_records(directory);
           });
       if (parameters.problem.geometry == GeometryKind::bars)
-        Simulation<1>(parameters,
-                      std::make_unique<BarModel>(parameters.geometry, parameters.contact),
-                      std::cout)
-            .run(resume);
+      {
+        Simulation<1> simulation(
+            parameters,
+            std::make_unique<BarModel>(parameters.geometry, parameters.contact),
+            std::cout);
+        simulation.set_progress(!command_line.quiet);
+        simulation.run(resume);
+      }
       else
-        Simulation<2>(parameters,
-                      std::make_unique<AxisymmetricMeshModel>(
-                          parameters.mesh, parameters.bodies, parameters.contact),
-                      std::cout)
-            .run(resume);
+      {
+        Simulation<2> simulation(parameters,
+                                 std::make_unique<AxisymmetricMeshModel>(
+                                     parameters.mesh, parameters.bodies, parameters.contact),
+                                 std::cout);
+        simulation.set_progress(!command_line.quiet);
+        simulation.run(resume);
+      }
       return 0;
     }
     }

@@ -36,6 +36,8 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
       command_line.overrides.push_back(value_of(i));
     else if (argument == "--output")
       command_line.overrides.push_back("Output/directory=" + value_of(i));
+    else if (argument == "--quiet")
+      command_line.quiet = true;
     else if (argument == "--resume")
     {
       // The resumed run continues in the interrupted run's directory.
@@ -68,9 +70,10 @@ std::string CommandLine::usage()
          "1993).\n"
          "\n"
          "Usage:\n"
-         "  dyncontact FILE.prm [--set \"Section/entry=value\"]... [--output DIR]\n"
+         "  dyncontact FILE.prm [--set \"Section/entry=value\"]... [--output DIR] [--quiet]\n"
          "      run the problem; every --set overrides one entry of FILE.prm (repeatable),\n"
          "      --output DIR is short for --set \"Output/directory=DIR\".\n"
+         "      --quiet leaves out the progress lines (warnings and the summary stay).\n"
          "  dyncontact FILE.prm --resume DIR [--set ...]\n"
          "      continue the interrupted run of FILE.prm from DIR/checkpoint.bin, in DIR.\n"
          "  dyncontact --validate FILE.prm [--set ...]\n"

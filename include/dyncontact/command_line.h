@@ -26,6 +26,7 @@ struct CommandLine
   std::string parameter_file;
   std::vector<std::string> overrides; ///< "Section/entry=value", in order; --output adds one
   std::string resume_directory;       ///< --resume DIR: continue from DIR/checkpoint.bin
+  bool quiet = false;                 ///< --quiet: no progress lines
 
   /** Throws InputError naming the offending argument. */
   static CommandLine parse(const std::vector<std::string>& arguments);

@@ -62,6 +62,9 @@ public:
    */
   void run(const std::string& resume_directory = "");
 
+  /** Whether run() prints the progress line (default true; `--quiet` switches it off). */
+  void set_progress(const bool show) { show_progress = show; }
+
   /** The recorded history, one row per step including t = 0. */
   const History& history() const { return step_history; }
 
@@ -196,5 +199,6 @@ private:
   TimerOutput timer;
   std::unique_ptr<StepController> controller;
   Counters counters;
+  bool show_progress = true;
 };
 } // namespace dyncontact
