@@ -38,6 +38,14 @@ void on_root_rank(const Task& task)
   if (!error.empty())
     throw dyncontact::InputError(error);
 }
+/** Throws InputError unless `directory` holds a checkpoint to resume from. */
+void check_checkpoint_exists(const std::string& directory)
+{
+  if (!std::filesystem::exists(directory + "/checkpoint.bin"))
+    throw dyncontact::InputError("--resume " + directory + ": there is no checkpoint " + directory +
+                                 "/checkpoint.bin (a run writes one when interrupted or every "
+                                 "Output/checkpoint interval steps).");
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -60,6 +68,8 @@ int main(int argc, char** argv)
     {
       const ParameterReader reader(command_line.parameter_file, command_line.overrides);
       check_run_setup(reader.parameters());
+      if (!command_line.resume_directory.empty())
+        check_checkpoint_exists(command_line.resume_directory);
       std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
       return 0;
     }
@@ -74,10 +84,7 @@ int main(int argc, char** argv)
             const std::string& directory = parameters.output.directory;
             if (!resume.empty())
             {
-              if (!std::filesystem::exists(resume + "/checkpoint.bin"))
-                throw InputError("--resume " + resume + ": there is no checkpoint " + resume +
-                                 "/checkpoint.bin (a run writes one when interrupted or every "
-                                 "Output/checkpoint interval steps).");
+              check_checkpoint_exists(resume);
               return; // the interrupted run's results stay; the resumed run continues them
             }
             prepare_output_directory(directory);
