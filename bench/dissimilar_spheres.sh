@@ -2,9 +2,12 @@
 # Dissimilar spheres (issue 10, acceptance B): the rho = 0.001 impact of prm/spheres_rho0.001.prm
 # with body 1 stiffer by E1/E2 = 1 (identical, the reference bands), 2, 10 and 100, on the coarse
 # (Refinement 0) and medium (Refinement 1) meshes, neo-Hookean, modified scheme, paper's dt.
-# For each run: completed or not, step cuts, peak force, duration and impulse against Hertz with
-# E* = 1 / ((1 - nu^2)/E1 + (1 - nu^2)/E2) (the identical-sphere reference with the same E*),
+# For each run: completed or not, step cuts, the largest sampled force (no parabola), the contact
+# window (from the last sample before the contact to the first after it: an upper bound of the
+# duration, within two steps) and the trapezoidal impulse, against Hertz with
+# E* = 1 / ((1 - nu^2)/E1 + (1 - nu^2)/E2) (the identical-sphere reference with the same E*); the
 # largest energy gain over E_0, and the largest |momentum change - impulse| over the momentum.
+# The precise measures (measure_impact) of the coarse runs with E1/E2 = 2 and 10 are ctests.
 # Writes bench/results/dissimilar_spheres.csv and prints it; about 25 minutes on 2 cores.
 #   bench/dissimilar_spheres.sh
 set -euo pipefail
