@@ -11,6 +11,7 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -132,7 +133,14 @@ int main(int argc, char** argv)
           CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
       std::cerr << "dyncontact: interrupted by " << interruption.what()
                 << "; resume with: dyncontact " << command_line.parameter_file << " --resume "
-                << interruption.directory() << std::endl;
+                << interruption.directory()
+                << (std::any_of(command_line.overrides.begin(),
+                                command_line.overrides.end(),
+                                [](const std::string& o)
+                                { return o.rfind("Output/directory=", 0) != 0; })
+                        ? " and the same --set options"
+                        : "")
+                << std::endl;
     }
     return 128 + interruption.signal();
   }

@@ -1,5 +1,7 @@
 #include <dyncontact/command_line.h>
 
+#include <algorithm>
+
 namespace dyncontact
 {
 CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
@@ -56,6 +58,12 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
       throw InputError("more than one parameter file given ('" + command_line.parameter_file +
                        "' and '" + argument + "').");
   }
+  if (!command_line.resume_directory.empty() &&
+      std::count_if(command_line.overrides.begin(),
+                    command_line.overrides.end(),
+                    [](const std::string& o) { return o.rfind("Output/directory=", 0) == 0; }) > 1)
+    throw InputError("--resume DIR continues in DIR; do not give --output or Output/directory "
+                     "with it.");
   if (!action_given && !command_line.overrides.empty())
     throw InputError("no parameter file given; see --help.");
   if ((command_line.action == Action::run || command_line.action == Action::validate) &&

@@ -11,6 +11,8 @@ volatile std::sig_atomic_t received_signal = 0;
 extern "C" void record_signal(const int signal)
 {
   received_signal = signal;
+  // A second signal ends the run at once (a step may take long, e.g. in a cascade of cuts).
+  std::signal(signal, SIG_DFL);
 }
 } // namespace
 

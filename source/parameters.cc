@@ -543,7 +543,8 @@ void GuardParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry("energy tolerance",
                     "1e-4",
                     Patterns::Double(),
-                    "Allowed energy gain, relative to the largest energy of the run [-], 0..1.");
+                    "Allowed energy gain, relative to the initial energy (for bodies starting at "
+                    "rest: the largest energy of the run) [-], 0..1.");
   prm.declare_entry("tensile force",
                     "true",
                     Patterns::Bool(),

@@ -233,6 +233,7 @@ typename Simulation<dim>::State Simulation<dim>::current_state() const
           internal_force,
           external_force,
           contact->state(),
+          solver->tangent_scale(),
           forces_on_bodies,
           impulses,
           external_work};
@@ -247,17 +248,16 @@ void Simulation<dim>::restore(const State& state)
   internal_force   = state.internal_force;
   external_force   = state.external_force;
   forces_on_bodies = state.body_forces;
-  impulses         = state.impulses;
-  external_work    = state.external_work;
+  solver->set_tangent_scale(state.tangent_scale);
+  impulses      = state.impulses;
+  external_work = state.external_work;
   contact->restore(state.contact);
   contact->update_geometry(displacement);
 }
 
 template <int dim>
-std::vector<double> Simulation<dim>::body_forces() const
+std::vector<bool> Simulation<dim>::active_pair_dofs() const
 {
-  // The nodes of the active pairs carry the contact force; elsewhere M a + Q - W is only the
-  // Newton residual, whose sum over a body balance_body_momenta() has removed.
   std::vector<bool> in_active_pair(dof_handler.n_dofs(), false);
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
     if (contact->is_active(k))
@@ -270,6 +270,15 @@ std::vector<double> Simulation<dim>::body_forces() const
           in_active_pair[pair.node_b->dofs[d]] = true;
       }
     }
+  return in_active_pair;
+}
+
+template <int dim>
+std::vector<double> Simulation<dim>::body_forces() const
+{
+  // The nodes of the active pairs carry the contact force; elsewhere M a + Q - W is only the
+  // Newton residual, whose sum over a body balance_body_momenta() has removed.
+  const std::vector<bool> in_active_pair = active_pair_dofs();
   std::vector<double> forces(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
@@ -338,16 +347,20 @@ template <int dim>
 void Simulation<dim>::balance_body_momenta(Vector<double>& increment) const
 {
   // The residual r = c M (u - u~) + Q(u) - W - G^T lambda left within the Newton tolerance, summed
-  // over a body along the impact direction, is a momentum error of the step; a rigid translation
-  // t of the body along that direction changes only the inertia term (Q is invariant, W and
-  // G^T lambda do not depend on it), by c t sum m. Choosing t to cancel the sum makes the step
-  // conserve momentum exactly; t is the residual over c M, far below the gap tolerance.
+  // over the nodes of a body that carry no contact force, along the impact direction, is a
+  // momentum error of the step that no recovered force accounts for (at the active pairs' nodes
+  // the residual is part of the recovered contact force, body_forces()). A rigid translation t of
+  // the body along that direction changes only the inertia term (Q is invariant, W and G^T lambda
+  // do not depend on it), by c t m at every DoF. Choosing t to cancel the sum makes the step's
+  // momentum change equal its recovered impulse exactly; t is the residual over c M, far below the
+  // gap tolerance.
   Vector<double> contact_force(dof_handler.n_dofs());
   contact->add_contact_forces(contact_force);
-  const double c = newmark.inertia_factor();
+  const std::vector<bool> in_active_pair = active_pair_dofs();
+  const double c                         = newmark.inertia_factor();
   std::vector<double> residual_sum(model->n_bodies(), 0.), inertia_sum(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    if (!is_fixed_dof[i] && dof_direction[i] != 0.)
+    if (!is_fixed_dof[i] && dof_direction[i] != 0. && !in_active_pair[i])
     {
       const double residual =
           c * mass[i] * increment[i] + internal_force[i] - external_force[i] - contact_force[i];
@@ -355,7 +368,7 @@ void Simulation<dim>::balance_body_momenta(Vector<double>& increment) const
       inertia_sum[dof_body[i]] += c * mass[i] * dof_direction[i] * dof_direction[i];
     }
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    if (!is_fixed_dof[i] && dof_direction[i] != 0.)
+    if (!is_fixed_dof[i] && dof_direction[i] != 0. && inertia_sum[dof_body[i]] > 0.)
       increment[i] -= residual_sum[dof_body[i]] / inertia_sum[dof_body[i]] * dof_direction[i];
 }
 
@@ -528,8 +541,9 @@ std::string Simulation<dim>::problem_fingerprint() const
   std::ostringstream text;
   text << std::setprecision(17) << "dimension " << dim << ", " << dof_handler.n_dofs() << " DoFs, "
        << contact->n_pairs() << " contact candidates, " << model->n_bodies() << " bodies, dt "
-       << parameters.time.time_step << ", beta " << newmark.beta() << ", gamma " << newmark.gamma()
-       << ", " << (newmark.scheme() == NewmarkScheme::modified ? "modified" : "classical") << ", "
+       << parameters.time.time_step << ", maximum step cuts " << parameters.time.max_step_cuts
+       << ", beta " << newmark.beta() << ", gamma " << newmark.gamma() << ", "
+       << (newmark.scheme() == NewmarkScheme::modified ? "modified" : "classical") << ", "
        << (parameters.contact.formulation == ContactFormulation::penalty ? "penalty"
                                                                          : "Lagrange multiplier");
   return text.str();
@@ -718,9 +732,10 @@ void Simulation<dim>::run(const std::string& resume_directory)
     // Every rank stops at the same step, whichever received the signal.
     const int signal            = Utilities::MPI::max(interrupt_signal(), MPI_COMM_WORLD);
     const unsigned int interval = parameters.output.checkpoint_interval;
-    if (signal != 0 || (interval > 0 && nominal_time_reached && nominal_step % interval == 0))
+    if ((signal != 0 && !controller->finished()) ||
+        (interval > 0 && nominal_time_reached && nominal_step % interval == 0))
       write_checkpoint();
-    if (signal != 0)
+    if (signal != 0 && !controller->finished())
     {
       write_reference_and_summary();
       throw RunInterrupted("signal " + std::to_string(signal) + " at t = " + format_number(time) +

@@ -89,11 +89,17 @@ std::pair<std::string, double> StepGuards::violation(const Guard guard, const Fi
 
 std::string StepGuards::check(const Figures& step) const
 {
+  bool finite = std::isfinite(step.energy) && std::isfinite(step.contact_force);
+  for (unsigned int b = 0; b < step.momenta.size(); ++b)
+    finite = finite && std::isfinite(step.momenta[b]) && std::isfinite(step.impulses[b]);
+  if (!finite)
+    return "the solution is not finite (energy " + format_number(step.energy) + ", contact force " +
+           format_number(step.contact_force) + ")";
   for (const Guard guard : {energy, tensile_force, momentum})
     if (enabled(guard))
     {
       const auto [reason, amount] = violation(guard, step);
-      if (amount > 0.)
+      if (!reason.empty())
         return reason;
     }
   return "";
@@ -106,7 +112,7 @@ void StepGuards::accept(const Figures& step)
     {
       const auto [reason, amount] = violation(guard, step);
       Record& record              = disabled_violations[guard];
-      if (amount > 0. && record.first_reason.empty())
+      if (!reason.empty() && record.first_reason.empty())
       {
         record.first_reason = reason;
         record.first_time   = step.time;

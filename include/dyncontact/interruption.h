@@ -10,7 +10,8 @@ namespace dyncontact
 /**
  * SIGINT and SIGTERM as a request to stop cleanly: the handlers only record the signal; the time
  * loop asks after each accepted step (interrupt_signal(), agreed over all MPI ranks there), writes
- * a checkpoint and throws RunInterrupted. It does not write anything itself.
+ * a checkpoint and throws RunInterrupted; a second signal of the same kind ends the process at
+ * once. It does not write anything itself.
  */
 void install_interrupt_handlers();
 

@@ -65,7 +65,7 @@ public:
   /** Whether run() prints the progress line (default true; `--quiet` switches it off). */
   void set_progress(const bool show) { show_progress = show; }
 
-  /** The recorded history, one row per step including t = 0. */
+  /** The recorded history, one row per accepted (sub-)step including t = 0. */
   const History& history() const { return step_history; }
 
   /** Lumped nodal masses per DoF. */
@@ -87,6 +87,7 @@ private:
   {
     Vector<double> displacement, velocity, acceleration, internal_force, external_force;
     typename ContactConstraints<dim>::State contact;
+    double tangent_scale; ///< the solver's, see ContactNewtonSolver::tangent_scale()
     std::vector<double> body_forces, impulses;
     double external_work;
   };
@@ -118,6 +119,8 @@ private:
    * the total force that changes its momentum, up to the Newton residual of its other nodes.
    */
   std::vector<double> body_forces() const;
+  /** Per DoF: whether it belongs to a node of an active pair (at the current state). */
+  std::vector<bool> active_pair_dofs() const;
   /** Adds the impulses of the step from `before` (Newmark-weighted forces plus rate corrections).
    */
   void accumulate_impulses(const State& before);

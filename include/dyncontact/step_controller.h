@@ -35,9 +35,6 @@ public:
   /** The nominal step in progress, 1..n_steps (the next step ends inside or at its end). */
   unsigned int nominal_step() const { return nominal_index; }
 
-  /** How many times the current size has been halved (0 = the nominal step). */
-  unsigned int cut_level() const { return level; }
-
   /**
    * The next step was accepted: advances the position; returns true if it reached a nominal time
    * t_n. The size regrows (doubles) after two accepted sub-steps at a level when aligned.

@@ -33,10 +33,10 @@ namespace dyncontact
  *   impulses) to `momentum tolerance` times the momentum scale (the largest total |p| seen).
  *   Equality is exact for a converged step; a gap means a residual left in the momentum balance.
  *
- * A zero scale (nothing moves yet) skips that check. A guard switched off does not reject steps,
- * but its first violation is kept for a warning at the end of the run (warnings()), so that a run
- * that gains energy (e.g. the paper's classical Newmark, reproduced with `Guards/energy = false`)
- * says so. It does not cut or solve anything.
+ * A non-finite figure always rejects the step. A zero scale (nothing moves yet) skips that check. A
+ * guard switched off does not reject steps, but its first violation is kept for a warning at the
+ * end of the run (warnings()), so that a run that gains energy (e.g. the paper's classical Newmark,
+ * reproduced with `Guards/energy = false`) says so. It does not cut or solve anything.
  */
 class StepGuards
 {

@@ -1,7 +1,8 @@
 # Checkpoint and restart (issue 10, D): a run interrupted mid-contact and resumed must write a
 # history.csv equal, byte for byte, to that of the uninterrupted run. LAUNCH is an optional
 # '|'-separated launcher (mpirun -np 2), OPTIONS the run's '|'-separated arguments; CHECKPOINT_STEP
-# the step at which Output/checkpoint interval writes the checkpoint (mid-contact).
+# the step at which Output/checkpoint interval writes the checkpoint (mid-contact); RESUMED_AT, if
+# set, the time the resumed run must report starting from.
 # 1. the uninterrupted run, writing a checkpoint every CHECKPOINT_STEP steps;
 # 2. the interrupted one: the same run stopped by SIGTERM (timeout) if SIGNAL is set, or else the
 #    uninterrupted run's directory cut back to its checkpoint (history.csv removed, so the resumed
@@ -33,8 +34,12 @@ else()
 endif()
 execute_process(COMMAND ${launch} ${EXECUTABLE} ${options} --resume ${DIRECTORY}/interrupted
                 RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
-if(NOT result EQUAL 0 OR NOT output MATCHES "resumed from .* at t = ")
-  message(FATAL_ERROR "the resumed run failed (${result}): ${error}\n${output}")
+if(NOT result EQUAL 0 OR NOT output MATCHES "resumed from .* at t = ${RESUMED_AT}")
+  message(FATAL_ERROR "the resumed run failed or did not resume at t = ${RESUMED_AT} (${result}): "
+                      "${error}\n${output}")
+endif()
+if(output MATCHES "done, [0-9]+ steps \\(0 taken")
+  message(FATAL_ERROR "the resumed run took no step: it did not resume mid-run\n${output}")
 endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${DIRECTORY}/uninterrupted/history.csv
                         ${DIRECTORY}/interrupted/history.csv RESULT_VARIABLE differ)
