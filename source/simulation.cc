@@ -413,17 +413,16 @@ template <int dim>
 typename Simulation<dim>::Measures Simulation<dim>::measure() const
 {
   Measures measures{};
-  double acceleration_energy = 0.;
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
     measures.kinetic_energy += 0.5 * mass[i] * velocity[i] * velocity[i];
-    acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
+    measures.acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
   }
   // After a step the solver's last evaluation was at this displacement: reuse its pass.
   measures.strain_energy =
       step_history.n_rows() == 0 ? bodies->strain_energy(displacement) : solver->strain_energy();
   measures.algorithmic_energy = newmark.algorithmic_energy(
-      measures.kinetic_energy, measures.strain_energy, acceleration_energy);
+      measures.kinetic_energy, measures.strain_energy, measures.acceleration_energy);
   if (step_history.n_rows() > 0)
   {
     const Vector<double> net_force = net_internal_force();
@@ -443,8 +442,14 @@ StepGuards::Figures Simulation<dim>::guard_figures(const Measures& measures) con
   double multiplier_magnitude = 0.;
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
     multiplier_magnitude += std::abs(contact->active_multiplier(k));
+  const auto energy_at_this_step_size = [this](const Measures& state)
+  {
+    return newmark.algorithmic_energy(
+        state.kinetic_energy, state.strain_energy, state.acceleration_energy);
+  };
   return {time,
-          measures.algorithmic_energy,
+          guarded_energy + energy_at_this_step_size(measures) -
+              energy_at_this_step_size(accepted_measures),
           external_work,
           measures.contact_force,
           multiplier_magnitude,
@@ -566,6 +571,10 @@ void Simulation<dim>::serialize_state(Archive& archive)
   archive& forces_on_bodies;
   archive& impulses;
   archive& external_work;
+  archive& guarded_energy;
+  archive& accepted_measures.kinetic_energy;
+  archive& accepted_measures.strain_energy;
+  archive& accepted_measures.acceleration_energy;
   archive&* controller;
   archive& guards;
   archive& step_history;
@@ -643,6 +652,8 @@ void Simulation<dim>::run(const std::string& resume_directory)
   const double dt = parameters.time.time_step;
   controller      = std::make_unique<StepController>(dt, n_steps, parameters.time.max_step_cuts);
   const Measures initial = measure();
+  guarded_energy         = initial.algorithmic_energy;
+  accepted_measures      = initial;
   guards.initialize(guard_figures(initial));
   if (resume_directory.empty())
   {
@@ -685,6 +696,8 @@ void Simulation<dim>::run(const std::string& resume_directory)
         if (failure.empty())
         {
           guards.accept(figures);
+          guarded_energy    = figures.energy;
+          accepted_measures = measures;
           break;
         }
       }

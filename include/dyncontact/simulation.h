@@ -97,7 +97,8 @@ private:
   /** What history.csv, the guards and the log read about the current state. */
   struct Measures
   {
-    double kinetic_energy, strain_energy, algorithmic_energy, contact_force, force_imbalance;
+    double kinetic_energy, strain_energy, acceleration_energy, algorithmic_energy, contact_force,
+        force_imbalance;
     std::vector<double> momenta;
   };
   Measures measure() const;
@@ -196,6 +197,14 @@ private:
   std::vector<double> impulses;         ///< per body, accumulated since t = 0
   double external_work = 0.;            ///< work of the external forces since t = 0
   StepGuards guards;
+  /**
+   * The energy the energy guard reads: E_0 plus the algorithmic-energy change of every accepted
+   * step, each evaluated with that step's size h (the weight (beta - gamma/2) h^2 of a.Ma depends
+   * on h, so E with the new h minus E with the old one would show a gain after every cut when beta
+   * != gamma/2), and the energy parts of the last accepted state.
+   */
+  double guarded_energy = 0.;
+  Measures accepted_measures{};
   History step_history;
   /** Rows of step_history on the nominal time grid (the Hertz comparison needs uniform steps). */
   std::vector<unsigned int> nominal_rows;

@@ -16,7 +16,8 @@ namespace dyncontact
  * The physics a solved step must respect before it is accepted, checked on figures the
  * Simulation measures (a tripped guard makes the step fail, which cuts it):
  *
- * - energy: the algorithmic energy E_{n+1} (Newmark::algorithmic_energy) must not exceed the
+ * - energy: the algorithmic energy E_{n+1} (Newmark::algorithmic_energy; Simulation passes E_0
+ *   plus the changes of the accepted steps, each at its own step size) must not exceed the
  *   initial energy plus the work of the external forces by more than `energy tolerance` times the
  *   energy scale (the larger of |E_0| and |external work|; for E_0 = 0 the largest accepted
  *   energy instead). Elastic bodies in
