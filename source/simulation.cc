@@ -531,12 +531,7 @@ void Simulation<dim>::write_reference_and_summary()
   // The impact measures need uniform samples: the rows on the nominal grid.
   History nominal_history(step_history.column_names());
   for (const unsigned int row : nominal_rows)
-  {
-    std::vector<double> values;
-    for (const auto& name : step_history.column_names())
-      values.push_back(step_history.value(row, name));
-    nominal_history.add_row(values);
-  }
+    nominal_history.add_row(step_history.row(row));
   model->summarize_run(directory, nominal_history, log.get_stream());
 }
 
@@ -733,15 +728,6 @@ void Simulation<dim>::run(const std::string& resume_directory)
     ++steps_this_run;
     counters.total_solves += linear_solves;
     record_step(measures, nominal_time_reached ? nominal_step : 0, linear_solves, cuts);
-    if (!std::isfinite(step_history.value(step_history.n_rows() - 1, "algorithmic_energy")))
-    {
-      write_reference_and_summary();
-      throw SolverFailure("step " + std::to_string(nominal_step) + " (t = " + format_number(time) +
-                          "): the solution is no longer finite; the time integration is unstable "
-                          "(see the stability warning at start, if any). Results up to this step "
-                          "are in " +
-                          directory + ".");
-    }
     // Every rank stops at the same step, whichever received the signal.
     const int signal            = Utilities::MPI::max(interrupt_signal(), MPI_COMM_WORLD);
     const unsigned int interval = parameters.output.checkpoint_interval;

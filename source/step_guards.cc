@@ -94,7 +94,8 @@ std::string StepGuards::check(const Figures& step) const
     finite = finite && std::isfinite(step.momenta[b]) && std::isfinite(step.impulses[b]);
   if (!finite)
     return "the solution is not finite (energy " + format_number(step.energy) + ", contact force " +
-           format_number(step.contact_force) + ")";
+           format_number(step.contact_force) +
+           "): the time integration may be unstable (see the stability warning at start, if any)";
   for (const Guard guard : {energy, tensile_force, momentum})
     if (enabled(guard))
     {

@@ -38,6 +38,13 @@ public:
   /** All values of column `name`; throws std::out_of_range if there is no such column. */
   std::vector<double> column(const std::string& name) const;
 
+  /** All values of row `index`, in column order. */
+  const std::vector<double>& row(const unsigned int index) const
+  {
+    AssertIndexRange(index, rows.size());
+    return rows[index];
+  }
+
   /** Value of column `name` in row `row`. */
   double value(unsigned int row, const std::string& name) const;
 
