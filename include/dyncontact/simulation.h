@@ -105,7 +105,11 @@ private:
   StepGuards::Figures guard_figures(const Measures& measures) const;
 
   void setup();
-  void warn_about_stability() const;
+  /**
+   * Warns when a penalty spring is the one unresolved frequency; throws InputError when the time
+   * step exceeds the stability limit of conditionally stable Newmark (2 beta < gamma).
+   */
+  void check_stability() const;
   void set_initial_conditions();
   /**
    * Removes from the converged `increment` the momentum error of each body: a rigid translation
