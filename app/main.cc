@@ -53,6 +53,9 @@ int main(int argc, char** argv)
 {
   using namespace dyncontact;
   Utilities::MPI::MPI_InitFinalize mpi_initialization(argc, argv, 1);
+  // From the start, so that a signal during the set-up (meshing, a long parameter check) is also
+  // answered with a checkpoint after the first step instead of ending the process unrecorded.
+  install_interrupt_handlers();
   try
   {
     const CommandLine command_line =

@@ -669,7 +669,6 @@ void Simulation<dim>::run(const std::string& resume_directory)
     log << "dyncontact: resumed from " << resume_directory << "/checkpoint.bin at t = " << time
         << "\n";
   }
-  install_interrupt_handlers();
 
   const auto wall_start       = std::chrono::steady_clock::now();
   auto last_progress          = wall_start;

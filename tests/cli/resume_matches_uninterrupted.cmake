@@ -4,7 +4,8 @@
 # the step at which Output/checkpoint interval writes the checkpoint (mid-contact); RESUMED_AT, if
 # set, the time the resumed run must report starting from.
 # 1. the uninterrupted run, writing a checkpoint every CHECKPOINT_STEP steps;
-# 2. the interrupted one: the same run stopped by SIGTERM (timeout) if SIGNAL is set, or else the
+# 2. the interrupted one: the same run stopped by SIGTERM once its history.csv has SIGNAL_ROW rows
+#    (SIGNALLER polls it) if SIGNAL_ROW is set, or else the
 #    uninterrupted run's directory cut back to its checkpoint (history.csv removed, so the resumed
 #    run must rebuild it from the checkpoint);
 # 3. --resume on it, and the two history files compared;
@@ -18,12 +19,12 @@ execute_process(COMMAND ${launch} ${EXECUTABLE} ${options} --output ${DIRECTORY}
 if(NOT result EQUAL 0)
   message(FATAL_ERROR "the uninterrupted run failed (${result}): ${error}")
 endif()
-if(SIGNAL)
-  execute_process(COMMAND timeout --preserve-status -s TERM ${SIGNAL} ${launch} ${EXECUTABLE}
-                          ${options} --output ${DIRECTORY}/interrupted
+if(SIGNAL_ROW)
+  execute_process(COMMAND ${SIGNALLER} ${DIRECTORY}/interrupted/history.csv ${SIGNAL_ROW} ${launch}
+                          ${EXECUTABLE} ${options} --output ${DIRECTORY}/interrupted
                   RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
   if(result EQUAL 0)
-    message(FATAL_ERROR "the run finished within ${SIGNAL} s, before SIGTERM; lengthen it")
+    message(FATAL_ERROR "the run finished before its history reached row ${SIGNAL_ROW}")
   endif()
   if(NOT error MATCHES "interrupted by signal 15 at t = .*resume with: dyncontact .* --resume ")
     message(FATAL_ERROR "no resume line after SIGTERM (exit ${result}):\n${error}")
