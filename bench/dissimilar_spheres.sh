@@ -7,8 +7,8 @@
 # duration, within two steps) and the trapezoidal impulse, against Hertz with
 # E* = 1 / ((1 - nu^2)/E1 + (1 - nu^2)/E2) (the identical-sphere reference with the same E*); the
 # largest energy gain over E_0, and the largest |momentum change - impulse| over the momentum.
-# The precise measures (measure_impact) of the coarse runs with E1/E2 = 2 and 10 are ctests.
-# Writes bench/results/dissimilar_spheres.csv and prints it; about 25 minutes on 2 cores.
+# The precise measures (measure_impact) of the coarse runs with E1/E2 = 2, 10 and 100 are ctests.
+# Writes bench/results/dissimilar_spheres.csv and prints it; about 2 minutes on 2 cores.
 #   bench/dissimilar_spheres.sh
 set -euo pipefail
 source "$(dirname "$0")/common.sh"

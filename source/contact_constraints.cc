@@ -33,6 +33,13 @@ void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement
 }
 
 template <int dim>
+void ContactConstraints<dim>::scale_penalty_stiffness(const double factor)
+{
+  for (auto& pair : pairs)
+    pair.penalty_stiffness *= factor;
+}
+
+template <int dim>
 unsigned int ContactConstraints<dim>::n_active() const
 {
   return std::count(active.begin(), active.end(), true);

@@ -125,7 +125,6 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       residual(n_dofs + n_pairs), constraint_residual(n_pairs), multiplier_increment(n_pairs);
   displacement = predictor;
   displacement += increment;
-  contact.update_geometry(displacement);
 
   // A pair enters when the unconstrained predicted gap is negative.
   bool active_set_changed = contact.update_active_set(displacement, gap_tolerance, 0.);
@@ -153,7 +152,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       increment[i] += length * newton_update[i];
     displacement = predictor;
     displacement += increment;
-    contact.update_geometry(displacement);
+
     contact.restore(before_update->contact);
     for (unsigned int k = 0; k < n_pairs; ++k)
       multiplier_increment[k] = length * newton_update[n_dofs + k];
@@ -263,7 +262,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       increment    = restart_increment;
       displacement = predictor;
       displacement += increment;
-      contact.update_geometry(displacement);
+
       active_set_changed = contact.update_active_set(displacement, gap_tolerance, 0.);
       continue;
     }

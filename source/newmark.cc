@@ -1,5 +1,8 @@
 #include <dyncontact/newmark.h>
 
+#include <cmath>
+#include <limits>
+
 namespace dyncontact
 {
 Newmark::Newmark(const TimeIntegrationParameters& parameters)
@@ -44,5 +47,10 @@ double Newmark::algorithmic_energy(const double kinetic_energy,
   // acceleration_energy.
   return kinetic_energy + strain_energy +
          (beta_value - 0.5 * gamma_value) * dt * dt * acceleration_energy;
+}
+double Newmark::stability_limit() const
+{
+  return 2. * beta_value < gamma_value ? 1. / std::sqrt(gamma_value / 2. - beta_value)
+                                       : std::numeric_limits<double>::infinity();
 }
 } // namespace dyncontact

@@ -479,23 +479,38 @@ void ContactParameters::declare_parameters(ParameterHandler& prm)
                     "exact, one multiplier unknown per candidate pair (saddle-point solve). "
                     "penalty: force eps <-g> along the normal (allows small penetration).");
   prm.declare_entry("penalty factor",
-                    "100",
-                    Patterns::Double(0.),
+                    "auto",
+                    Patterns::Anything(),
                     "Penalty only: stiffness eps of a pair [force/length] = this factor [-] times "
-                    "E A / h of the stiffer side, > 0. Bars: A the cross-section, h the element "
-                    "length at the contact node; meshes: A the pair's contact area (2 pi r "
-                    "weighted), h the shortest cell edge. "
+                    "E A / h of the stiffer side; a number > 0, or auto. Bars: A the "
+                    "cross-section, h the element length at the contact node; meshes: A the "
+                    "pair's contact area (2 pi r weighted), h the shortest cell edge. "
+                    "auto: 100 where the time step does not resolve the bodies' highest mode "
+                    "(omega dt > 2, the quasi-static contact of the spheres: penetration about "
+                    "1e-3 of the Hertz approach), else the largest factor <= 100 whose stiffest "
+                    "spring has omega dt <= 1 (wave problems such as the bars: an unresolved "
+                    "spring chatters, forces several times the exact ones). The run prints the "
+                    "factor it chose. "
                     "With the classical scheme and beta < gamma/2 a large penalty needs a small "
-                    "time step (a warning at start says so).");
+                    "time step (a run refuses one above the stability limit).");
   prm.leave_subsection();
 }
 
 void ContactParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Contact");
-  formulation    = prm.get("formulation") == "penalty" ? ContactFormulation::penalty
-                                                       : ContactFormulation::lagrange_multiplier;
-  penalty_factor = get_positive(prm, "penalty factor", "Contact");
+  formulation              = prm.get("formulation") == "penalty" ? ContactFormulation::penalty
+                                                                 : ContactFormulation::lagrange_multiplier;
+  const std::string factor = prm.get("penalty factor");
+  automatic_penalty        = factor == "auto";
+  penalty_factor           = quasi_static_penalty_factor;
+  if (!automatic_penalty)
+  {
+    std::istringstream stream(factor);
+    if (!(stream >> penalty_factor) || !(stream >> std::ws).eof() || !(penalty_factor > 0.))
+      throw InputError("Contact/penalty factor = " + factor +
+                       " is not allowed: it must be a number > 0 or auto.");
+  }
   prm.leave_subsection();
 }
 

@@ -2,35 +2,20 @@
 #include <dyncontact/bar_model.h>
 #include <dyncontact/output_directory.h>
 #include <dyncontact/setup_check.h>
+#include <dyncontact/simulation.h>
 
-#include <deal.II/dofs/dof_handler.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_system.h>
-#include <deal.II/fe/mapping_q.h>
+#include <ostream>
 
 namespace dyncontact
 {
 namespace
 {
-/** Builds what Simulation::run() builds from `model` before its first step, and discards it. */
+/** Runs Simulation::prepare() for `model`, discarding what it logs. */
 template <int dim>
-void set_up(ProblemModel<dim>& model)
+void prepare(const RunParameters& parameters, std::unique_ptr<ProblemModel<dim>> model)
 {
-  Triangulation<dim> triangulation;
-  model.create_triangulation(triangulation);
-  const unsigned int degree = model.element_degree();
-  const MappingQ<dim> mapping(degree);
-  const FESystem<dim> fe(FE_Q<dim>(degree), dim);
-  DoFHandler<dim> dof_handler(triangulation);
-  dof_handler.distribute_dofs(fe);
-  const NodeIndex<dim> nodes(dof_handler, mapping);
-  const std::unique_ptr<Kinematics<dim>> kinematics = model.create_kinematics();
-  if (!model.create_surface_contact(dof_handler, *kinematics, nodes))
-    model.contact_pairs(nodes);
-  model.fixed_dofs(nodes);
-  model.monitor_nodes(nodes);
-  for (const Node<dim>& node : nodes.nodes())
-    model.initial_velocity(node.body, node.position);
+  std::ostream discard(nullptr);
+  Simulation<dim>(parameters, std::move(model), discard).prepare();
 }
 } // namespace
 
@@ -39,15 +24,16 @@ void check_run_setup(const RunParameters& parameters)
   check_output_directory(parameters.output.directory);
   if (parameters.problem.geometry == GeometryKind::bars)
   {
-    BarModel model(parameters.geometry, parameters.contact);
-    set_up<1>(model);
+    auto model = std::make_unique<BarModel>(parameters.geometry, parameters.contact);
     if (parameters.output.write_exact_solution)
-      model.exact_solution(parameters.time.n_steps() * parameters.time.time_step);
+      model->exact_solution(parameters.time.n_steps() * parameters.time.time_step);
+    prepare<1>(parameters, std::move(model));
   }
   else
   {
-    AxisymmetricMeshModel model(parameters.mesh, parameters.bodies, parameters.contact);
-    set_up<2>(model);
+    prepare<2>(parameters,
+               std::make_unique<AxisymmetricMeshModel>(
+                   parameters.mesh, parameters.bodies, parameters.contact));
   }
 }
 } // namespace dyncontact

@@ -146,14 +146,13 @@ void Simulation<dim>::setup()
         << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
   if (is_root_rank)
     model->print_summary(log.get_stream(), dt);
+  size_automatic_penalty();
   check_stability();
 }
 
 template <int dim>
-void Simulation<dim>::check_stability() const
+double Simulation<dim>::penalty_spring_omega_dt() const
 {
-  const double body_omega_dt = model->highest_frequency() * newmark.time_step();
-  // The stiffest penalty spring between two lumped masses, omega = sqrt(eps / m_reduced).
   double spring_omega_dt = 0.;
   if (parameters.contact.formulation == ContactFormulation::penalty)
     for (const auto& pair : contact->candidate_pairs())
@@ -165,28 +164,80 @@ void Simulation<dim>::check_stability() const
       spring_omega_dt      = std::max(spring_omega_dt,
                                  newmark.time_step() * std::sqrt(pair.penalty_stiffness / reduced));
     }
-  // A resolved mesh (omega dt <= 2, Courant number about 1) with an unresolved penalty spring: the
-  // spring is the one frequency the step cannot follow, and the contact node chatters (bars 6.2
-  // at the default factor: omega dt = 20, force peaks 6 times the exact force; the energy guard
-  // then cuts almost every contact step). In the quasi-static regime of the spheres both are
-  // unresolved and the penalty behaves.
-  constexpr double resolved = 2.;
-  if (spring_omega_dt > resolved && body_omega_dt <= resolved * (1. + 1e-9))
-    log << "WARNING: the penalty spring (Contact/penalty factor = "
-        << parameters.contact.penalty_factor << ") has omega dt = " << spring_omega_dt
-        << " while the bodies' highest mode has " << body_omega_dt
-        << ": expect contact chatter and step cuts by the energy guard. A penalty factor <= "
-        << parameters.contact.penalty_factor * std::pow(resolved / spring_omega_dt, 2)
-        << " resolves the spring (omega dt <= 2), at the cost of more penetration.\n";
+  return spring_omega_dt;
+}
 
-  // With 2 beta < gamma Newmark is stable only for omega dt <= 1/sqrt(gamma/2 - beta). The
-  // bodies' highest frequency and the penalty spring must both stay below it: above, the run blows
-  // up, and the algorithmic energy, whose weight beta - gamma/2 of a.Ma is then negative, does not
-  // show it (measured: 6.1 at dt = 0.3, energy 5 -> 2.7e64 with the guards passing). Such an
-  // input is rejected before the first step.
-  if (2. * newmark.beta() >= newmark.gamma())
+namespace
+{
+/// omega dt up to which the trapezoidal rule is said to resolve a mode (period error 1/3 at 2).
+constexpr double resolved_omega_dt = 2.;
+/// Slack of the stability checks, relative: a time step they suggest is printed to 6 significant
+/// digits and may round up by 5e-7; taken as given, it must pass.
+constexpr double suggestion_rounding = 1e-6;
+} // namespace
+
+template <int dim>
+void Simulation<dim>::size_automatic_penalty()
+{
+  penalty_factor = parameters.contact.penalty_factor;
+  if (parameters.contact.formulation != ContactFormulation::penalty ||
+      !parameters.contact.automatic_penalty)
     return;
-  const double limit = 1. / std::sqrt(newmark.gamma() / 2. - newmark.beta());
+  // Wave problems (the bodies' highest mode resolved): an unresolved spring is the one mode the
+  // step cannot follow and the contact node chatters (bars 6.2 at factor 100: omega dt = 20,
+  // force peaks 3.2 against the exact 0.5, 117 contact episodes). At omega dt = 1 the spring's
+  // period error is 8 % and the force peak is 0.513 (1 episode). In the quasi-static regime of
+  // the spheres both are unresolved, the stiff penalty behaves and keeps the penetration small.
+  const double body_omega_dt   = model->highest_frequency() * newmark.time_step();
+  const double spring_omega_dt = penalty_spring_omega_dt();
+  if (body_omega_dt <= resolved_omega_dt * (1. + 1e-9) && spring_omega_dt > 1.)
+  {
+    // With 2 beta < gamma the spring and the mesh together must stay below the stability limit
+    // (see check_stability()); a spring softer than omega dt = 1 would buy that with a penetration
+    // growing as 1 / (omega dt)^2, so such a time step is refused instead.
+    const double limit = newmark.stability_limit();
+    if (body_omega_dt * body_omega_dt + 1. > limit * limit * (1. + 2. * suggestion_rounding))
+      throw InputError(
+          "Contact/penalty factor = auto: with Time integration/beta = " +
+          format_number(newmark.beta()) +
+          " < gamma/2 the mesh's highest mode (omega dt = " + format_number(body_omega_dt) +
+          ") leaves a penalty spring of omega dt = 1 no room below the stability limit " +
+          format_number(limit) + "; use a time step <= " +
+          format_number(newmark.time_step() * std::sqrt(limit * limit - 1.) / body_omega_dt) +
+          ", beta >= gamma/2, or Lagrange multipliers.");
+    const double scale = 1. / (spring_omega_dt * spring_omega_dt);
+    contact->scale_penalty_stiffness(scale);
+    penalty_factor *= scale;
+  }
+  log << "  penalty factor (auto): " << penalty_factor
+      << ", stiffest contact spring omega dt = " << penalty_spring_omega_dt()
+      << ", bodies' highest mode omega dt = " << body_omega_dt << "\n";
+}
+
+template <int dim>
+void Simulation<dim>::check_stability() const
+{
+  const double body_omega_dt   = model->highest_frequency() * newmark.time_step();
+  const double spring_omega_dt = penalty_spring_omega_dt();
+  // A resolved mesh (omega dt <= 2, Courant number about 1) with an unresolved penalty spring: the
+  // spring is the one frequency the step cannot follow, and the contact node chatters (see
+  // size_automatic_penalty()).
+  if (spring_omega_dt > resolved_omega_dt && body_omega_dt <= resolved_omega_dt * (1. + 1e-9))
+    log << "WARNING: the penalty spring (Contact/penalty factor = " << penalty_factor
+        << ") has omega dt = " << spring_omega_dt << " while the bodies' highest mode has "
+        << body_omega_dt
+        << ": expect contact chatter and step cuts by the energy guard. A penalty factor <= "
+        << penalty_factor * std::pow(1. / spring_omega_dt, 2)
+        << " (or auto) resolves the spring (omega dt <= 1), at the cost of more penetration.\n";
+
+  // With 2 beta < gamma Newmark is stable only for omega dt <= 1/sqrt(gamma/2 - beta). Every mode
+  // must stay below it: above, the run blows up, and the algorithmic energy, whose weight
+  // beta - gamma/2 of a.Ma is then negative, does not show it (measured: 6.1 at dt = 0.3, energy
+  // 5 -> 2.7e64 with the guards passing). A penalty spring adds its stiffness to the mesh's, so the
+  // coupled highest mode is bounded by sqrt(omega_mesh^2 + omega_spring^2) (Weyl's inequality on
+  // M^-1/2 (K + K_penalty) M^-1/2): 6.1 with a spring of omega dt = 1 on a mesh at 2 (bound 2.24,
+  // limit 2.004) went from energy 5 to 6e51. Such an input is rejected before the first step.
+  const double limit = newmark.stability_limit();
   const auto reject = [&](const std::string& what, const double omega_dt, const std::string& remedy)
   {
     throw InputError(
@@ -196,11 +247,12 @@ void Simulation<dim>::check_stability() const
         ", gamma = " + format_number(newmark.gamma()) + "; use a time step <= " +
         format_number(newmark.time_step() * limit / omega_dt) + ", 2 beta >= gamma" + remedy + ".");
   };
-  if (body_omega_dt > limit * (1. + 1e-12))
+  if (body_omega_dt > limit * (1. + suggestion_rounding))
     reject("the mesh's highest mode", body_omega_dt, "");
-  if (spring_omega_dt > limit)
-    reject("the penalty spring (Contact/penalty factor)",
-           spring_omega_dt,
+  const double coupled_omega_dt = std::hypot(body_omega_dt, spring_omega_dt);
+  if (spring_omega_dt > 0. && coupled_omega_dt > limit * (1. + suggestion_rounding))
+    reject("the mesh with the penalty spring (Contact/penalty factor)",
+           coupled_omega_dt,
            " or a smaller penalty factor");
 }
 
@@ -640,10 +692,16 @@ void Simulation<dim>::read_checkpoint(const std::string& directory)
 }
 
 template <int dim>
-void Simulation<dim>::run(const std::string& resume_directory)
+void Simulation<dim>::prepare()
 {
   setup();
   set_initial_conditions();
+}
+
+template <int dim>
+void Simulation<dim>::run(const std::string& resume_directory)
+{
+  prepare();
   const std::string& directory = parameters.output.directory;
   field_output = std::make_unique<FieldOutput<dim>>(dof_handler, mapping, directory);
   if (dim == 2 && is_root_rank)

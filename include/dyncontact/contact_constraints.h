@@ -32,7 +32,8 @@ class NodeToNodeContact;
  * (see update_active_set()).
  *
  * Normals are fixed unless the pairs come from a NodeToNodeContact: then update_geometry() moves
- * them to the current configuration (call it whenever the displacement changes).
+ * them to a configuration; the time loop calls it at every converged (or restored) configuration,
+ * and a step's Newton solve keeps those normals (see NodeToNodeContact).
  *
  * It does not choose time steps, assemble elasticity or solve linear systems.
  */
@@ -53,6 +54,9 @@ public:
   void update_geometry(const Vector<double>& displacement);
 
   unsigned int n_pairs() const { return pairs.size(); }
+
+  /** Multiplies every pair's penalty stiffness by `factor` > 0 (automatic penalty sizing). */
+  void scale_penalty_stiffness(double factor);
   const std::vector<ContactPair<dim>>& candidate_pairs() const { return pairs; }
   unsigned int n_active() const;
   bool is_active(unsigned int pair) const { return active[pair]; }

@@ -28,7 +28,9 @@ namespace dyncontact
  * (max diag(K_eff) |u| + |c M (u - u~)|), the active constraints hold to the gap tolerance, the
  * last update left the active set unchanged (discrete complementarity: active pairs compressive
  * and closed, inactive pairs open), and, if any pair is active, at least one linear solve was
- * made. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment.
+ * made. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment. The pairs' normals
+ * are those the contact layer holds on entry (the last converged configuration's); the solver
+ * never moves them, so the constraint rows are linear in u and the tangent is exact.
  *
  * Initial guess: the residual is first evaluated at the given guess (the Newmark predictor),
  * without the tangent (using the diagonal of the last tangent for the force scale), so that steps

@@ -36,6 +36,13 @@ public:
   double beta() const { return beta_value; }
   double gamma() const { return gamma_value; }
   double time_step() const { return dt; }
+
+  /**
+   * The largest omega dt of a mode for which the scheme is stable: 1 / sqrt(gamma/2 - beta) when
+   * 2 beta < gamma (Hughes, The Finite Element Method, 2000, sec. 9.1), else infinity
+   * (unconditionally stable).
+   */
+  double stability_limit() const;
   NewmarkScheme scheme() const { return scheme_value; }
 
   /** Sets the step size of the next steps (step control cuts and regrows it), dt > 0. */

@@ -25,13 +25,17 @@ namespace dyncontact
  *
  * Current normal of a pair: n = (n_A - n_B) / |n_A - n_B| with the current outward nodal normals of
  * ContactSurface; it points from A toward B and is the common normal of the two surfaces where they
- * touch (n_B = -n_A there). The 60-degree limit keeps |n_A - n_B| >= 1. The constraint gradient of
- * a pair is taken with the normal held fixed over a Newton update (the variation of n is not
- * linearized): that term is proportional to the separation of the two nodes across n, which
- * vanishes for a closed pair of matching nodes, so Newton keeps its quadratic rate as the pairs
- * close. Contact area of a pair: the mean of its two nodes' lumped areas
- * (ContactSurface::lumped_areas(), 2 pi r weighted in axisymmetry); it scales the penalty
- * stiffness. The contact pressure comes from a consistent recovery instead (contact_pressures()).
+ * touch (n_B = -n_A there). The 60-degree limit keeps |n_A - n_B| >= 1. Within a time step the
+ * normals stay those of the last converged configuration u_n (ContactConstraints::update_geometry()
+ * is called once per accepted step), so that the gap is linear in u and Newton's tangent is exact.
+ * Following the normal inside Newton without linearizing it left out the term lambda dn/du of the
+ * contact force, proportional to the multiplier, not to the separation: on dissimilar spheres
+ * (E1/E2 >= 10) that quasi-Newton stalled at a residual 10^3 times the tolerance whenever the
+ * active set shrank. A closed pair of matching nodes is separated only tangentially, so the lag
+ * changes its gap at second order in the rotation of n over one step. Contact area of a pair: the
+ * mean of its two nodes' lumped areas (ContactSurface::lumped_areas(), 2 pi r weighted in
+ * axisymmetry); it scales the penalty stiffness. The contact pressure comes from a consistent
+ * recovery instead (contact_pressures()).
  *
  * It is not a general contact search: no sliding beyond the matched partner, no segment
  * projection, no self contact.

@@ -52,8 +52,14 @@ struct TimeIntegrationParameters
 struct ContactParameters
 {
   ContactFormulation formulation;
-  /// penalty stiffness of a pair = this factor times E A / h of the stiffer side (dimensionless)
+  /// penalty stiffness of a pair = this factor times E A / h of the stiffer side (dimensionless);
+  /// with `automatic_penalty` the factor the models start from (quasi_static_penalty_factor),
+  /// which Simulation lowers for wave problems
   double penalty_factor;
+  /// Contact/penalty factor = auto: chosen per run by the time-step resolution, see the prm help
+  bool automatic_penalty;
+  /// the automatic factor where the bodies' highest mode is not resolved by the time step
+  static constexpr double quasi_static_penalty_factor = 100.;
 
   static void declare_parameters(ParameterHandler& prm);
   void parse_parameters(ParameterHandler& prm);

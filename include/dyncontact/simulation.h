@@ -62,6 +62,14 @@ public:
    */
   void run(const std::string& resume_directory = "");
 
+  /**
+   * Everything run() does before its first step, writing no file: builds the mesh, DoFs, bodies,
+   * contact candidates and monitor nodes, sizes an automatic penalty, checks the time step against
+   * the stability limit and sets the initial conditions. Throws the InputError a run would throw;
+   * `--validate` calls it. run() calls it first.
+   */
+  void prepare();
+
   /** Whether run() prints the progress line (default true; `--quiet` switches it off). */
   void set_progress(const bool show) { show_progress = show; }
 
@@ -105,6 +113,13 @@ private:
   StepGuards::Figures guard_figures(const Measures& measures) const;
 
   void setup();
+  /** omega dt of the stiffest penalty spring between its two lumped masses, sqrt(eps / m*) dt. */
+  double penalty_spring_omega_dt() const;
+  /**
+   * Contact/penalty factor = auto: where the bodies' highest mode is resolved (omega dt <= 2),
+   * lowers the springs to omega dt <= 1; logs the factor in force.
+   */
+  void size_automatic_penalty();
   /**
    * Warns when a penalty spring is the one unresolved frequency; throws InputError when the time
    * step exceeds the stability limit of conditionally stable Newmark (2 beta < gamma).
@@ -188,6 +203,8 @@ private:
   unsigned int innermost_pair = 0; ///< candidate pair nearest to the axis (centre_pressure)
   std::unique_ptr<FieldOutput<dim>> field_output;
   std::set<unsigned int> profile_steps; ///< steps at which a profile is written
+  double penalty_factor =
+      0.; ///< the factor in force (Contact/penalty factor, or the automatic one)
   unsigned int n_steps;
   double time;
   Vector<double> displacement, velocity, acceleration;
