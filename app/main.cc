@@ -145,6 +145,9 @@ int main(int argc, char** argv)
                         : "")
                 << std::endl;
     }
+    // No rank leaves before rank 0 has written the checkpoint and said how to resume: a launcher
+    // such as mpirun ends the whole job as soon as one rank exits with a non-zero code.
+    MPI_Barrier(MPI_COMM_WORLD);
     return 128 + interruption.signal();
   }
   catch (const SolverFailure& error)
