@@ -1,13 +1,13 @@
 // The dyncontact executable: reads the command line and the parameter file, dispatches to the
 // problem's dimension, and turns every failure into one clear message and a non-zero exit code.
-#include <dyncontact/axisymmetric_mesh_model.h>
-#include <dyncontact/bar_model.h>
-#include <dyncontact/command_line.h>
-#include <dyncontact/interruption.h>
-#include <dyncontact/output_directory.h>
-#include <dyncontact/parameters.h>
-#include <dyncontact/setup_check.h>
-#include <dyncontact/simulation.h>
+#include <dyncontact/base/command_line.h>
+#include <dyncontact/base/output_directory.h>
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/bar_model.h>
+#include <dyncontact/simulation/interruption.h>
+#include <dyncontact/simulation/setup_check.h>
+#include <dyncontact/simulation/simulation.h>
 
 #include <deal.II/base/mpi.h>
 

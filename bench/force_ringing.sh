@@ -5,7 +5,7 @@
 # (dt = 0.0025) on the medium mesh with neo-Hookean material; plus the penalty formulation
 # (classical only: it cannot be combined with the modified scheme) on the first case.
 # Ringing is the RMS of the 4th difference / 16 over 5-sample windows inside the contact
-# (measure_impact() in include/dyncontact/impact_measures.h):
+# (measure_impact() in include/dyncontact/reference/impact_measures.h):
 #  - total: of the total contact force, relative to its peak (impact_summary.csv);
 #  - nodal force, nodal pressure: of every pair's multiplier and recovered contact pressure
 #    (contact_pressure_t*.csv, written at every step of the contact), over the windows in which

@@ -1,8 +1,8 @@
 #include "case_run.h"
 
-#include <dyncontact/axisymmetric_mesh_model.h>
-#include <dyncontact/bar_model.h>
-#include <dyncontact/output_directory.h>
+#include <dyncontact/base/output_directory.h>
+#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/bar_model.h>
 
 #include <filesystem>
 #include <fstream>

@@ -1,9 +1,9 @@
 #pragma once
 // Test support: runs shipped prm files in-process (bars paired with their exact solution).
 
-#include <dyncontact/exact_bar_solution.h>
-#include <dyncontact/parameters.h>
-#include <dyncontact/simulation.h>
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/reference/exact_bar_solution.h>
+#include <dyncontact/simulation/simulation.h>
 
 #include <map>
 #include <memory>

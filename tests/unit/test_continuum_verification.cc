@@ -8,9 +8,9 @@
 //    distorted patches, axisymmetric with the axis inside the patch, and 3D;
 //  - convergence: a manufactured axisymmetric linear elastic solution converges at the optimal Q2
 //    rates, h^3 in L2 and h^2 in the H1 seminorm, both weighted with 2 pi r.
-#include <dyncontact/elastic_bodies.h>
-#include <dyncontact/kinematics.h>
-#include <dyncontact/material.h>
+#include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/discretization/kinematics.h>
+#include <dyncontact/material/material.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/index_set.h>

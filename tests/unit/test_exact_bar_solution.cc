@@ -1,4 +1,4 @@
-#include <dyncontact/exact_bar_solution.h>
+#include <dyncontact/reference/exact_bar_solution.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

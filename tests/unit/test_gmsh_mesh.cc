@@ -10,7 +10,7 @@
 //  - all cells quadrilaterals with a positive Jacobian at every Gauss point of the Q2 mapping;
 //  - a second-order .msh file (9-node quadrilaterals) read on its vertices;
 //  - bad input: every kind gives one line of InputError naming the file.
-#include <dyncontact/gmsh_mesh.h>
+#include <dyncontact/models/gmsh_mesh.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>

@@ -1,4 +1,4 @@
-#include <dyncontact/hertz_reference.h>
+#include <dyncontact/reference/hertz_reference.h>
 
 #include <algorithm>
 #include <cmath>

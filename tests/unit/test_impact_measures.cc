@@ -1,5 +1,5 @@
-#include <dyncontact/hertz_reference.h>
-#include <dyncontact/impact_measures.h>
+#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/impact_measures.h>
 
 #include <algorithm>
 #include <cmath>

@@ -3,7 +3,7 @@
 // deformation must give the exact F (axisymmetric: diag(a, b, a) including the hoop stretch), the
 // variation of F must be the derivative of F with respect to each nodal value, and the measure
 // factor must integrate to the reference volume.
-#include <dyncontact/kinematics.h>
+#include <dyncontact/discretization/kinematics.h>
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/numbers.h>

@@ -3,7 +3,7 @@
 // deformations), every law reduces to the same linear elasticity at F = I, the finite-strain laws
 // are objective, and the factory and constructors reject bad input with messages that name the
 // entry and the allowed range.
-#include <dyncontact/material.h>
+#include <dyncontact/material/material.h>
 
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/utilities.h>

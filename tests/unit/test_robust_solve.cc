@@ -2,8 +2,8 @@
 // finish with a physically impossible answer or stop must now complete with the physics the code
 // checks (energy never above its start, no tensile total force, impulse = momentum change), cutting
 // steps where needed; the figures are compared with Hertz's theory where it applies.
-#include <dyncontact/hertz_reference.h>
-#include <dyncontact/impact_measures.h>
+#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/impact_measures.h>
 
 #include <algorithm>
 #include <cmath>

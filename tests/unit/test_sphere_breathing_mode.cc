@@ -1,4 +1,4 @@
-#include <dyncontact/sphere_breathing_mode.h>
+#include <dyncontact/reference/sphere_breathing_mode.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // finite-strain elastodynamics): prm/sphere_free_vibration.prm run in-process and compared with
 // the analytic breathing mode of a solid sphere (SphereBreathingModes, tested on its own), with
 // exact conservation properties of the trapezoidal rule, and with the sphere's mass.
-#include <dyncontact/sphere_breathing_mode.h>
+#include <dyncontact/reference/sphere_breathing_mode.h>
 
 #include <cmath>
 #include <gtest/gtest.h>

@@ -2,8 +2,8 @@
 // prm files run in-process on the coarse member of the graded two-sphere mesh family and compared
 // with Hertz's theory (HertzImpactOfIdenticalSpheres, tested on its own) through measure_impact()
 // (tested on its own), and with exact conservation properties of node-to-node contact.
-#include <dyncontact/hertz_reference.h>
-#include <dyncontact/impact_measures.h>
+#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/impact_measures.h>
 
 #include <algorithm>
 #include <cmath>

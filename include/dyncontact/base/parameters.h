@@ -1,0 +1,244 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+#include <deal.II/base/point.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dyncontact
+{
+/** Which Newmark variant advances velocities and accelerations (paper sections 4 and 5). */
+enum class NewmarkScheme
+{
+  classical, ///< plain Newmark; contact constrains displacements only
+  modified   ///< Taylor & Papadopoulos: also [[v]].n = 0 and [[a]].n = 0 on active pairs
+};
+
+/** How the contact constraint g >= 0 is enforced. */
+enum class ContactFormulation
+{
+  lagrange_multiplier, ///< exact enforcement, one multiplier unknown per candidate pair
+  penalty              ///< force eps <-g> along the normal
+};
+
+/** Newmark parameters and the time window of a run. Subsection `Time integration`. */
+struct TimeIntegrationParameters
+{
+  NewmarkScheme scheme;
+  double beta;
+  double gamma;
+  double time_step;
+  double end_time;
+  /// a failing step is halved at most this many times (minimum step dt / 2^max_step_cuts)
+  unsigned int max_step_cuts;
+
+  /**
+   * Number of steps: end time / time step, rounded up (the last step may end past end time), at
+   * least 1.
+   */
+  unsigned int n_steps() const;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/** Contact enforcement. Subsection `Contact`. */
+struct ContactParameters
+{
+  ContactFormulation formulation;
+  /// penalty stiffness of a pair = this factor times E A / h of the stiffer side (dimensionless);
+  /// with `automatic_penalty` the factor the models start from (quasi_static_penalty_factor),
+  /// which Simulation lowers for wave problems
+  double penalty_factor;
+  /// Contact/penalty factor = auto: chosen per run by the time-step resolution, see the prm help
+  bool automatic_penalty;
+  /// the automatic factor where the bodies' highest mode is not resolved by the time step
+  static constexpr double quasi_static_penalty_factor = 100.;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/** Convergence control of the per-step Newton / active-set loop. Subsection `Newton`. */
+struct NewtonParameters
+{
+  unsigned int max_iterations;
+  double residual_tolerance;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/**
+ * The physical checks of every step (StepGuards): each on by default, with a tolerance relative to
+ * the run's own scale. Subsection `Guards`.
+ */
+struct GuardParameters
+{
+  bool energy;
+  double energy_tolerance;
+  bool tensile_force;
+  double tensile_force_tolerance;
+  bool momentum;
+  double momentum_tolerance;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/** One straight linear elastic bar on the x axis. Subsection `Geometry/Bar <b>`. */
+struct BarParameters
+{
+  double left_end;
+  double length;
+  unsigned int n_elements;
+  double youngs_modulus;
+  double density;
+  double area;
+  double initial_velocity;
+
+  double right_end() const { return left_end + length; }
+  double wave_speed() const;
+  double element_length() const { return length / n_elements; }
+
+  static void declare_parameters(ParameterHandler& prm);
+  /// `section` is the subsection path used in error messages, e.g. "Geometry/Bar 2".
+  void parse_parameters(ParameterHandler& prm, const std::string& section);
+};
+
+/**
+ * The bodies of a bar problem: bars in prm order (body b = bar b) and an optional rigid wall at
+ * x = wall position that faces -x (all bars lie to its left). Subsection `Geometry`.
+ */
+struct GeometryParameters
+{
+  std::vector<BarParameters> bars;
+  bool wall_enabled;
+  double wall_position;
+
+  static void declare_parameters(ParameterHandler& prm, unsigned int n_bars);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/** What a run writes and where. Subsection `Output`. */
+struct OutputParameters
+{
+  std::string directory;
+  std::vector<double> profile_times;
+  unsigned int vtu_interval;
+  /// write checkpoint.bin every this many nominal steps (0: only when interrupted)
+  unsigned int checkpoint_interval;
+  bool write_exact_solution;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/** Which kind of problem a run solves; decides the dimension and the sections that apply. */
+enum class GeometryKind
+{
+  bars,             ///< 1D bars built in code, subsection `Geometry`
+  axisymmetric_mesh ///< bodies of revolution from a gmsh mesh, subsections `Mesh` and `Bodies`
+};
+
+/** Subsection `Problem`. */
+struct ProblemParameters
+{
+  GeometryKind geometry;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/** The mesh of a mesh-based problem. Subsection `Mesh`. */
+struct MeshParameters
+{
+  std::string file; ///< resolved: relative paths are taken relative to the parameter file
+  std::map<std::string, double> geo_parameters;
+
+  static void declare_parameters(ParameterHandler& prm);
+  /** `parameter_file_directory` resolves a relative mesh file name. */
+  void parse_parameters(ParameterHandler& prm, const std::string& parameter_file_directory);
+};
+
+/** One body of a mesh-based problem. Subsection `Bodies/Body <b>`. */
+struct BodyParameters
+{
+  std::string material;
+  double youngs_modulus;
+  double poissons_ratio;
+  double density;
+  Point<2> monitor_point;
+  std::shared_ptr<Functions::ParsedFunction<2>> initial_velocity;
+  std::shared_ptr<Functions::ParsedFunction<2>> surface_traction;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm, const std::string& section);
+};
+
+/** The bodies of a mesh-based problem, body b = material id b - 1. Subsection `Bodies`. */
+struct BodiesParameters
+{
+  std::vector<BodyParameters> bodies;
+
+  static void declare_parameters(ParameterHandler& prm, unsigned int n_bodies);
+  void parse_parameters(ParameterHandler& prm);
+};
+
+/** Every setting of one run, grouped by prm subsection. */
+struct RunParameters
+{
+  ProblemParameters problem;
+  TimeIntegrationParameters time;
+  ContactParameters contact;
+  NewtonParameters newton;
+  GuardParameters guards;
+  GeometryParameters geometry; ///< bars only
+  MeshParameters mesh;         ///< mesh-based problems only
+  BodiesParameters bodies;     ///< mesh-based problems only
+  OutputParameters output;
+};
+
+/**
+ * Reads a parameter file, applies `Section/entry=value` overrides, checks every value and keeps
+ * the ParameterHandler so that the run can record what it used. Every problem becomes an
+ * InputError naming the file, the entry and the allowed range. It does not create any output.
+ */
+class ParameterReader
+{
+public:
+  /**
+   * Parses `filename` and then the overrides in order (each "Section/Subsection/entry=value").
+   * Throws InputError on an unreadable file, an unknown entry, a value out of range, or
+   * inconsistent geometry.
+   */
+  ParameterReader(const std::string& filename, const std::vector<std::string>& overrides);
+
+  const RunParameters& parameters() const { return run_parameters; }
+
+  /**
+   * Writes `original.prm` (the input as given, followed by the overrides as comments) and
+   * `parameters.prm` (every entry with the value in effect) into `directory`.
+   */
+  void write_records(const std::string& directory) const;
+
+  /** Prints every entry with its documentation, default and allowed values. */
+  static void print_documentation(std::ostream& out);
+
+private:
+  /** Checks across subsections (scheme vs formulation). */
+  void check_consistency() const;
+
+  std::string input_filename;
+  std::string input_text;
+  std::vector<std::string> overrides;
+  ParameterHandler prm;
+  RunParameters run_parameters;
+};
+} // namespace dyncontact

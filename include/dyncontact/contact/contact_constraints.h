@@ -1,0 +1,200 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/contact/contact_pair.h>
+#include <dyncontact/discretization/node_index.h>
+#include <dyncontact/time_integration/newmark.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <optional>
+#include <vector>
+
+namespace dyncontact
+{
+template <int dim>
+class NodeToNodeContact;
+
+/**
+ * The contact layer: the candidate pairs, their active set and multipliers, their rows in the
+ * saddle-point system, and the modified Newmark's rate correction (Taylor & Papadopoulos 1993,
+ * section 5).
+ *
+ * Every candidate owns one multiplier unknown, so the sparsity pattern never changes; an inactive
+ * pair gets the trivial row lambda = 0. The Lagrange multiplier formulation enforces g = 0 on the
+ * active pairs; the penalty formulation is the same system with -1/eps on the multiplier
+ * diagonal (lambda = -eps g, i.e. the classical penalty force eps <-g>). Active set: a pair enters
+ * when it penetrates and leaves when its multiplier turns tensile (Hughes et al. 1976) and, on a
+ * surface with Lagrange multipliers, the contact pressure at its node is not compressive either
+ * (see update_active_set()).
+ *
+ * Normals are fixed unless the pairs come from a NodeToNodeContact: then update_geometry() moves
+ * them to a configuration; the time loop calls it at every converged (or restored) configuration,
+ * and a step's Newton solve keeps those normals (see NodeToNodeContact).
+ *
+ * It does not choose time steps, assemble elasticity or solve linear systems.
+ */
+template <int dim>
+class ContactConstraints
+{
+public:
+  /** Pairs with fixed normals (bars, a rigid wall). */
+  ContactConstraints(std::vector<ContactPair<dim>> pairs, ContactFormulation formulation);
+
+  /** The pairs of `surfaces`, whose normals follow the current configuration. */
+  ContactConstraints(const NodeToNodeContact<dim>& surfaces, ContactFormulation formulation);
+
+  /**
+   * For pairs of a NodeToNodeContact: sets every normal to that at `displacement`. Does nothing
+   * for fixed normals.
+   */
+  void update_geometry(const Vector<double>& displacement);
+
+  unsigned int n_pairs() const { return pairs.size(); }
+
+  /** Multiplies every pair's penalty stiffness by `factor` > 0 (automatic penalty sizing). */
+  void scale_penalty_stiffness(double factor);
+  const std::vector<ContactPair<dim>>& candidate_pairs() const { return pairs; }
+  unsigned int n_active() const;
+  bool is_active(unsigned int pair) const { return active[pair]; }
+
+  /** The active set and multipliers, to be restored if a Newton step is taken back. */
+  struct State
+  {
+    std::vector<bool> active;
+    Vector<double> multipliers;
+  };
+  State state() const { return {active, multiplier_values}; }
+  void restore(const State& saved)
+  {
+    active            = saved.active;
+    multiplier_values = saved.multipliers;
+  }
+
+  /** Gap of candidate `pair` at displacement u (negative = penetration). */
+  double gap(unsigned int pair, const Vector<double>& displacement) const;
+
+  /** Couples row/column n_dofs + k of candidate k with the DoFs of its nodes. */
+  void add_to_sparsity(DynamicSparsityPattern& sparsity, types::global_dof_index n_dofs) const;
+
+  /** Adds the contact forces G^T lambda on the bodies to `force` (length n_dofs). */
+  void add_contact_forces(Vector<double>& force) const;
+
+  /**
+   * Writes the constraint rows of the Newton system into `matrix` (rows and columns n_dofs + k,
+   * symmetric) and their residuals into `constraint_residual` (length n_pairs): -g (Lagrange) or
+   * -g - lambda/eps (penalty) for active pairs, lambda for inactive ones with diagonal
+   * `inactive_diagonal`. The update is (delta u, delta lambda) = matrix^{-1} (-residual). A null
+   * `matrix` computes the residuals only (ranks that do not own the constraint rows).
+   */
+  void assemble_constraint_rows(const Vector<double>& displacement,
+                                double inactive_diagonal,
+                                TrilinosWrappers::SparseMatrix* matrix,
+                                Vector<double>& constraint_residual) const;
+
+  /** Adds a Newton increment of the multipliers. */
+  void add_multiplier_increment(const Vector<double>& increment);
+
+  /**
+   * Updates the active set at displacement u: inactive pairs with g < -gap_tolerance enter,
+   * active pairs with lambda < -force_tolerance leave (their multiplier is reset to zero), except,
+   * for surface pairs with Lagrange multipliers, those whose contact pressure (contact_pressures())
+   * is still compressive:
+   * a node whose consistent share of a compressive pressure is zero or negative (the axis node of
+   * an axisymmetric Q2 surface has zero tributary area) may carry a slightly tensile multiplier
+   * while its surroundings are pressed together. Returns whether anything changed.
+   */
+  bool update_active_set(const Vector<double>& displacement,
+                         double gap_tolerance,
+                         double force_tolerance);
+
+  /**
+   * The modified Newmark correction, the paper's eqs. (21)-(22) and the recovery formulas after
+   * them, with weights equal to the lumped nodal masses (a wall has infinite weight): on every
+   * active pair the normal components of v_{n+1} and a_{n+1} are corrected so that their jumps
+   * vanish. Tangential components and all other nodes keep the classical values.
+   */
+  void apply_rate_correction(const Newmark& newmark,
+                             const Vector<double>& lumped_mass,
+                             const NewmarkStep& step,
+                             Vector<double>& v_new,
+                             Vector<double>& a_new) const;
+
+  /**
+   * Total interface force, compression positive, recovered from the equations of motion of the
+   * body-A nodes of the active pairs: the sum of -n . (M a + Q(u) - W) at those nodes
+   * (`net_internal_force` = Q(u) - W). It equals the sum of the multipliers for the classical
+   * scheme and differs at an impact step of the modified one, whose corrected accelerations carry
+   * the interface force.
+   */
+  double recovered_contact_force(const Vector<double>& lumped_mass,
+                                 const Vector<double>& acceleration,
+                                 const Vector<double>& net_internal_force) const;
+
+  /**
+   * The interface force of the active node-to-node pairs (wall pairs left out) recovered as in
+   * recovered_contact_force() on each side: `on_a` from the body-A nodes (compression positive),
+   * `on_b` from the body-B nodes (the force A exerts on B along n). Equal up to round-off, also
+   * after the modified scheme's correction, whose normal rate changes on the two sides of a pair
+   * are equal and opposite; their difference measures the force balance.
+   */
+  struct SideForces
+  {
+    double on_a;
+    double on_b;
+  };
+  SideForces recovered_side_forces(const Vector<double>& lumped_mass,
+                                   const Vector<double>& acceleration,
+                                   const Vector<double>& net_internal_force) const;
+
+  /** The multiplier of candidate `pair` if it is active, else zero. */
+  double active_multiplier(unsigned int pair) const
+  {
+    return active[pair] ? multiplier_values[pair] : 0.;
+  }
+
+  /** Sum of the multipliers of the active pairs. */
+  double total_multiplier() const;
+
+  /** The largest penetration max(0, -g) over all candidate pairs at `displacement`. */
+  double max_penetration(const Vector<double>& displacement) const;
+
+  /**
+   * The largest distance of the current position of node A from the axis of the last coordinate
+   * (r in axisymmetry, where it is the contact radius) over the active pairs; zero if none is
+   * active. Meaningless in 1D, where it is zero.
+   */
+  double contact_radius(const Vector<double>& displacement) const;
+
+  /**
+   * The contact pressure at every pair (see NodeToNodeContact::contact_pressures()) at
+   * `displacement` from the multipliers of the active pairs; empty for pairs with fixed normals.
+   */
+  std::vector<double> contact_pressures(const Vector<double>& displacement) const;
+
+private:
+  /** Normal component n . f of a nodal vector field at `node`. */
+  double normal_component(const Node<dim>& node,
+                          const Tensor<1, dim>& normal,
+                          const Vector<double>& field) const;
+
+  /**
+   * n . (M a + Q(u) - W) at `node`: the equation-of-motion balance along n, i.e. minus the contact
+   * force on a body-A node and plus that on a body-B node.
+   */
+  double normal_balance(const Node<dim>& node,
+                        const Tensor<1, dim>& normal,
+                        const Vector<double>& lumped_mass,
+                        const Vector<double>& acceleration,
+                        const Vector<double>& net_internal_force) const;
+
+  std::vector<ContactPair<dim>> pairs;
+  const NodeToNodeContact<dim>* surfaces = nullptr; ///< null: fixed normals
+  ContactFormulation formulation;
+  std::vector<bool> active;
+  Vector<double> multiplier_values;
+};
+} // namespace dyncontact

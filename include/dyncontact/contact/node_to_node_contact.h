@@ -1,0 +1,93 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_pair.h>
+#include <dyncontact/contact/contact_surface.h>
+
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * Node-to-node contact between two bodies whose facing surfaces have matching nodes, such as the
+ * mirror-image meshes of the paper's two spheres: the candidate pairs and, for a displacement,
+ * their current normals and contact pressures.
+ *
+ * Pairing (reference configuration): with e the unit vector from body A's centroid to body B's,
+ * every node of surface A whose outward normal n_A satisfies n_A . e >= 1/2 (it faces B, within
+ * 60 degrees) is paired with the node of surface B that faces A (n_B . e <= -1/2) and lies
+ * across from it: the one nearest in the directions orthogonal to e. The two must coincide in those
+ * directions to `matching_tolerance`; otherwise the meshes do not match and the constructor throws
+ * InputError. Both vertex and mid-side nodes of Q2 faces take part.
+ *
+ * Current normal of a pair: n = (n_A - n_B) / |n_A - n_B| with the current outward nodal normals of
+ * ContactSurface; it points from A toward B and is the common normal of the two surfaces where they
+ * touch (n_B = -n_A there). The 60-degree limit keeps |n_A - n_B| >= 1. Within a time step the
+ * normals stay those of the last converged configuration u_n (ContactConstraints::update_geometry()
+ * is called once per accepted step), so that the gap is linear in u and Newton's tangent is exact.
+ * Following the normal inside Newton without linearizing it left out the term lambda dn/du of the
+ * contact force, proportional to the multiplier, not to the separation: on dissimilar spheres
+ * (E1/E2 >= 10) that quasi-Newton stalled at a residual 10^3 times the tolerance whenever the
+ * active set shrank. A closed pair of matching nodes is separated only tangentially, so the lag
+ * changes its gap at second order in the rotation of n over one step. Contact area of a pair: the
+ * mean of its two nodes' lumped areas (ContactSurface::lumped_areas(), 2 pi r weighted in
+ * axisymmetry); it scales the penalty stiffness. The contact pressure comes from a consistent
+ * recovery instead (contact_pressures()).
+ *
+ * It is not a general contact search: no sliding beyond the matched partner, no segment
+ * projection, no self contact.
+ */
+template <int dim>
+class NodeToNodeContact
+{
+public:
+  /**
+   * Pairs the facing nodes of `surface_a` (body A) and `surface_b` (body B). A pair's penalty
+   * stiffness is `penalty_stiffness_per_area` times its reference contact area.
+   *
+   * The bodies may touch at t = 0 but not overlap. Two paired nodes closer than
+   * `touching_tolerance` are the same point: the pair's node B is given node A's position, so
+   * that its reference gap is exactly zero, whatever the normal, and the pair starts closed. A
+   * pair whose reference gap is below -`touching_tolerance` means that the bodies overlap: the
+   * constructor throws InputError, with the overlap and where it is.
+   */
+  NodeToNodeContact(ContactSurface<dim> surface_a,
+                    ContactSurface<dim> surface_b,
+                    double penalty_stiffness_per_area,
+                    double matching_tolerance,
+                    double touching_tolerance);
+
+  /** The candidate pairs, with their reference normals. */
+  const std::vector<ContactPair<dim>>& pairs() const { return candidate_pairs; }
+
+  /**
+   * The current normal of every pair, in the order of pairs(), at `displacement` (a whole vector
+   * in the DoFHandler's numbering).
+   */
+  std::vector<Tensor<1, dim>> current_normals(const Vector<double>& displacement) const;
+
+  /**
+   * The contact pressure at every pair's node of surface A: the pressure field on the contact
+   * zone consistent with the nodal forces `multipliers` (one per pair, zero for inactive pairs).
+   * The contact zone is the support of the multipliers: the nodes of surface A whose pair has a
+   * nonzero multiplier. The pressure is p = sum over zone nodes j of p_j N_j, with N_j the
+   * surface's shape functions, and solves M_zz p_z = f_z, the rows and columns of the zone in the
+   * surface's consistent mass matrix (ContactSurface::mass_matrix) at `displacement`: the work of
+   * p on every zone node's shape function equals its nodal force. Open pairs (zero multiplier)
+   * carry no pressure: exactly 0. Exact for a pressure that the zone's shape functions represent;
+   * it also gives the pressure at the axis node of an axisymmetric model, whose tributary area is
+   * zero.
+   */
+  std::vector<double> contact_pressures(const Vector<double>& displacement,
+                                        const std::vector<double>& multipliers) const;
+
+private:
+  ContactSurface<dim> surface_a, surface_b;
+  /** Per pair: index of node_a in surface_a.nodes() and of node_b in surface_b.nodes(). */
+  std::vector<std::pair<unsigned int, unsigned int>> surface_nodes_of_pair;
+  std::vector<ContactPair<dim>> candidate_pairs;
+};
+} // namespace dyncontact

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/discretization/kinematics.h>
+#include <dyncontact/material/material.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <vector>
+
+namespace dyncontact
+{
+/** The constitutive data of one body: its hyperelastic law and reference mass density. */
+struct BodyMaterial
+{
+  std::shared_ptr<const Material> material;
+  double density;
+};
+
+/**
+ * The elastic bodies of a problem on one DoFHandler (body b = cells with material id b): the
+ * lumped mass, the internal force Q(u), its tangent dQ/du and the strain energy, all in the
+ * total-Lagrangian setting. It knows neither contact nor time stepping.
+ *
+ * Parallel: every MPI rank integrates its locally owned cells; nodal vectors (mass, Q) and the
+ * energy are summed over the ranks, so every rank holds them whole. The tangent goes into a
+ * distributed Trilinos matrix (entries in rows owned elsewhere are sent on compress()).
+ *
+ * The lumped mass is the HRZ (Hinton-Rock-Zienkiewicz) diagonal: per cell, the diagonal of the
+ * consistent mass scaled so that each component's entries sum to the cell's mass. It is positive
+ * at every node, also on the symmetry axis of an axisymmetric model, where nodal (Gauss-Lobatto)
+ * quadrature would give zero because the measure 2 pi r vanishes there; for 2-node bars and
+ * plane 9-node quadrilaterals it equals the nodal-quadrature lumping (1/2, 1/2 and 1/36, 1/9, 4/9).
+ */
+template <int dim>
+class ElasticBodies
+{
+public:
+  ElasticBodies(const DoFHandler<dim>& dof_handler,
+                const Mapping<dim>& mapping,
+                const Kinematics<dim>& kinematics,
+                std::vector<BodyMaterial> bodies);
+
+  /** Diagonal of the lumped mass matrix, one entry per DoF, on every rank. */
+  Vector<double> lumped_mass() const;
+
+  /**
+   * Internal force Q(u) into `internal_force` (overwritten) and, if `tangent` is not null, dQ/du
+   * added into its leading n_dofs x n_dofs block (the caller zeroes it), and, if
+   * `strain_energy` is not null, the strain energy from the same pass.
+   */
+  void assemble_internal_force(const Vector<double>& displacement,
+                               Vector<double>& internal_force,
+                               TrilinosWrappers::SparseMatrix* tangent,
+                               double* strain_energy = nullptr) const;
+
+  /** Total strain energy, the integral of W(F) over all bodies. */
+  double strain_energy(const Vector<double>& displacement) const;
+
+private:
+  /** Adds `values` over all MPI ranks, in place. */
+  void sum_over_ranks(Vector<double>& values) const;
+
+  /** One pass over all quadrature points filling whichever of the outputs is not null. */
+  void integrate(const Vector<double>& displacement,
+                 Vector<double>* internal_force,
+                 TrilinosWrappers::SparseMatrix* tangent,
+                 double* strain_energy) const;
+
+  const DoFHandler<dim>& dof_handler;
+  const Mapping<dim>& mapping;
+  const Kinematics<dim>& kinematics;
+  std::vector<BodyMaterial> bodies;
+};
+} // namespace dyncontact

@@ -1,0 +1,100 @@
+#pragma once
+
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/models/gmsh_mesh.h>
+#include <dyncontact/models/problem_model.h>
+#include <dyncontact/reference/hertz_reference.h>
+
+#include <optional>
+
+namespace dyncontact
+{
+/**
+ * Bodies of revolution in the (r, z) half plane (x = r, y = z) from a gmsh mesh, 9-node
+ * quadrilaterals with a quadratic mapping and the mesh's spherical manifolds: the paper's spheres.
+ * Each body has its own hyperelastic law, density, initial velocity (a parsed function of r, z) and
+ * monitor node; u_r is held at zero on the symmetry axis. Momentum and tip motion are reported
+ * along z. Two bodies touch through node-to-node contact of their facing surfaces.
+ */
+class AxisymmetricMeshModel : public ProblemModel<2>
+{
+public:
+  AxisymmetricMeshModel(const MeshParameters& mesh,
+                        const BodiesParameters& bodies,
+                        const ContactParameters& contact);
+
+  unsigned int element_degree() const override { return 2; }
+  unsigned int n_bodies() const override { return bodies.bodies.size(); }
+  /** 2 sqrt(6) c_p / h_min: the highest frequency of a lumped 1D 3-node element chain, c_p the
+   * dilatational wave speed and h_min the shortest cell edge (a bound, used for warnings). */
+  double highest_frequency() const override;
+  /** Reads the mesh; throws InputError if a body has no cells. */
+  void create_triangulation(Triangulation<2>& triangulation) override;
+  std::vector<BodyMaterial> body_materials() const override;
+  std::unique_ptr<Kinematics<2>> create_kinematics() const override;
+  /** Body b's `Initial velocity` at X; throws InputError if it is not finite there. */
+  Tensor<1, 2> initial_velocity(types::material_id body, const Point<2>& X) const override;
+  /** None: the contact of two bodies has current normals, see create_surface_contact(). */
+  std::vector<ContactPair<2>> contact_pairs(const NodeIndex<2>& nodes) const override;
+  /**
+   * With two bodies: node-to-node contact between their sphere surfaces (boundary ids
+   * SphereMeshIds::surface(0) and (1)), which must have matching facing nodes and must not
+   * overlap (they may touch, to touching_tolerance(), and then start closed); the penalty
+   * stiffness of a pair is Contact/penalty factor times E / h_min times its contact area (E of the
+   * stiffer body, h_min the shortest cell edge). With one body: null. More than two bodies are
+   * rejected (InputError).
+   */
+  std::unique_ptr<NodeToNodeContact<2>>
+  create_surface_contact(const DoFHandler<2>& dof_handler,
+                         const Kinematics<2>& kinematics,
+                         const NodeIndex<2>& nodes) const override;
+  std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
+  std::vector<Node<2>> monitor_nodes(const NodeIndex<2>& nodes) const override;
+  /** Body b's `Surface traction` on its surface (boundary id SphereMeshIds::surface(b)). */
+  std::vector<SurfaceTraction<2>> surface_tractions() const override;
+  Tensor<1, 2> impact_direction() const override;
+  /**
+   * Writes hertz.csv (time, contact_force, approach of Hertz's theory at `times`) if the problem
+   * is a Hertz impact, see hertz_reference().
+   */
+  void write_reference(const std::string& directory,
+                       const std::vector<double>& times,
+                       const std::vector<Node<2>>& monitors) const override;
+  /**
+   * For a Hertz impact: measures the contact force history (measure_impact()) and writes
+   * impact_summary.csv, the peak force, its time, contact start, end and duration, impulse and
+   * ringing next to Hertz's values and the relative differences. A run of one step has nothing
+   * to measure: it writes nothing and says so.
+   */
+  void summarize_run(const std::string& directory,
+                     const History& history,
+                     std::ostream& log) const override;
+  /**
+   * Hertz's theory of this impact if it applies: two spheres of equal radius and equal material
+   * constants whose centres approach along the axis with the initial velocities given (evaluated at
+   * the centres); first touch at (distance of the centres - 2 R) / approach speed, at t = 0 if
+   * they touch to touching_tolerance(). Empty otherwise (one body, other shapes, dissimilar
+   * spheres, overlapping spheres, spheres not approaching). Valid after create_triangulation().
+   */
+  std::optional<HertzImpactOfIdenticalSpheres> hertz_reference() const;
+  void print_summary(std::ostream& out, double time_step) const override;
+
+private:
+  /**
+   * How close surfaces count as touching at t = 0: 1e-9 of the shortest cell edge, and at least
+   * the round-off of the positions (8 units in the last place of the largest |z| of a sphere).
+   * Valid after create_triangulation().
+   */
+  double touching_tolerance() const;
+
+  /** Dilatational wave speed sqrt((lambda + 2 mu) / rho) of body b. */
+  double dilatational_wave_speed(unsigned int body) const;
+
+  MeshParameters mesh;
+  BodiesParameters bodies;
+  ContactParameters contact;
+  std::vector<SphereGeometry> spheres;
+  unsigned int n_cells;
+  double shortest_edge;
+};
+} // namespace dyncontact

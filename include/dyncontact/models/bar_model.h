@@ -1,0 +1,48 @@
+#pragma once
+
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/models/problem_model.h>
+#include <dyncontact/reference/exact_bar_solution.h>
+
+namespace dyncontact
+{
+/**
+ * The paper's 1D problems (section 6.1-6.3): any number of straight linear elastic bars on the x
+ * axis, each meshed with equal 2-node elements, plus an optional fixed rigid wall facing -x.
+ * Bars are disconnected pieces of one triangulation (each has its own end vertices, even where
+ * two bars touch). Candidate contacts: the facing ends of neighbouring bars (normal +x) and the
+ * rightmost bar's right end against the wall. The tip of a body is its node in the first
+ * candidate that involves it. Reference: the exact wave solution (ExactBarSolution) as exact.csv.
+ */
+class BarModel : public ProblemModel<1>
+{
+public:
+  BarModel(const GeometryParameters& geometry, const ContactParameters& contact);
+
+  unsigned int element_degree() const override { return 1; }
+  unsigned int n_bodies() const override { return geometry.bars.size(); }
+  /** max over the bars of 2 c / h, the highest frequency of a lumped-mass 2-node bar mesh. */
+  double highest_frequency() const override;
+  void create_triangulation(Triangulation<1>& triangulation) override;
+  std::vector<BodyMaterial> body_materials() const override;
+  std::unique_ptr<Kinematics<1>> create_kinematics() const override;
+  Tensor<1, 1> initial_velocity(types::material_id body, const Point<1>& X) const override;
+  std::vector<ContactPair<1>> contact_pairs(const NodeIndex<1>& nodes) const override;
+  std::vector<Node<1>> monitor_nodes(const NodeIndex<1>& nodes) const override;
+  Tensor<1, 1> impact_direction() const override;
+  void write_reference(const std::string& directory,
+                       const std::vector<double>& times,
+                       const std::vector<Node<1>>& monitors) const override;
+  void print_summary(std::ostream& out, double time_step) const override;
+
+  /** The exact wave solution of these bars, tracked up to `end_time`. */
+  ExactBarSolution exact_solution(double end_time) const;
+
+private:
+  /** Bar indices sorted by position along x. */
+  std::vector<unsigned int> bars_in_x_order() const;
+
+  GeometryParameters geometry;
+  ContactParameters contact;
+};
+} // namespace dyncontact

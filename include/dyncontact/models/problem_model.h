@@ -1,0 +1,100 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact/node_to_node_contact.h>
+#include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/discretization/kinematics.h>
+#include <dyncontact/discretization/node_index.h>
+#include <dyncontact/discretization/surface_tractions.h>
+#include <dyncontact/postprocess/history.h>
+
+#include <deal.II/grid/tria.h>
+
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * What distinguishes one kind of problem (bars, spheres, ...) from another for the one
+ * dim-templated Simulation: the mesh with body ids, the bodies' materials and kinematics, the
+ * initial velocity, the candidate contact pairs, the node of each body whose motion the history
+ * reports, and an independent reference solution if one exists. It does not solve anything.
+ */
+template <int dim>
+class ProblemModel
+{
+public:
+  virtual ~ProblemModel() = default;
+
+  /** Polynomial degree of the Lagrange elements (1: 2-node bars, 2: 9-node quadrilaterals). */
+  virtual unsigned int element_degree() const = 0;
+
+  /** All bodies in one triangulation, material id b = body b (0-based). */
+  virtual void create_triangulation(Triangulation<dim>& triangulation) = 0;
+
+  /** Number of bodies. */
+  virtual unsigned int n_bodies() const = 0;
+
+  /**
+   * An upper bound of the highest natural frequency (rad/time) of the discretized bodies with the
+   * lumped mass; explicit-like Newmark (2 beta < gamma) is stable only for omega dt below a limit.
+   */
+  virtual double highest_frequency() const = 0;
+
+  /** Material and density of every body, indexed by material id. */
+  virtual std::vector<BodyMaterial> body_materials() const = 0;
+
+  /** The kinematic model (1D bar, axisymmetric, ...). */
+  virtual std::unique_ptr<Kinematics<dim>> create_kinematics() const = 0;
+
+  /** Velocity at t = 0 of the material point X of `body`. */
+  virtual Tensor<1, dim> initial_velocity(types::material_id body, const Point<dim>& X) const = 0;
+
+  /** Candidate contact pairs with fixed normals, built from the mesh's nodes. */
+  virtual std::vector<ContactPair<dim>> contact_pairs(const NodeIndex<dim>& nodes) const = 0;
+
+  /**
+   * Node-to-node contact between curved surfaces, whose normals follow the deformation, or null
+   * (the default) if the model's contact is given by contact_pairs() alone. A model uses one or the
+   * other, not both.
+   */
+  virtual std::unique_ptr<NodeToNodeContact<dim>>
+  create_surface_contact(const DoFHandler<dim>& dof_handler,
+                         const Kinematics<dim>& kinematics,
+                         const NodeIndex<dim>& nodes) const;
+
+  /** DoFs held at zero for all time (e.g. u_r on the symmetry axis). The default: none. */
+  virtual std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<dim>& nodes) const;
+
+  /** Dead surface tractions (external loads). The default: none. */
+  virtual std::vector<SurfaceTraction<dim>> surface_tractions() const;
+
+  /** One node per body ("tip", its contact node) whose u, v, a the history reports. */
+  virtual std::vector<Node<dim>> monitor_nodes(const NodeIndex<dim>& nodes) const = 0;
+
+  /** Unit vector along which momentum and tip motion are reported (the impact direction). */
+  virtual Tensor<1, dim> impact_direction() const = 0;
+
+  /**
+   * Writes the model's independent reference solution (e.g. exact.csv) into `directory`, sampled
+   * at `times`, for the given monitor nodes. The default writes nothing.
+   */
+  virtual void write_reference(const std::string& directory,
+                               const std::vector<double>& times,
+                               const std::vector<Node<dim>>& monitors) const;
+
+  /**
+   * Compares the finished run's `history` with the model's reference, writing the comparison into
+   * `directory` and a short report to `log`. The default does nothing.
+   */
+  virtual void
+  summarize_run(const std::string& directory, const History& history, std::ostream& log) const;
+
+  /** A few lines describing the problem (sizes, wave speeds, Courant numbers). */
+  virtual void print_summary(std::ostream& out, double time_step) const = 0;
+};
+} // namespace dyncontact

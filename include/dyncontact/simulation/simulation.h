@@ -1,0 +1,237 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/discretization/node_index.h>
+#include <dyncontact/discretization/surface_tractions.h>
+#include <dyncontact/models/problem_model.h>
+#include <dyncontact/postprocess/field_output.h>
+#include <dyncontact/postprocess/history.h>
+#include <dyncontact/simulation/step_guards.h>
+#include <dyncontact/solver/contact_newton_solver.h>
+#include <dyncontact/time_integration/newmark.h>
+#include <dyncontact/time_integration/step_controller.h>
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/shared_tria.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q_cache.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <ostream>
+#include <set>
+
+namespace dyncontact
+{
+/**
+ * One run of an elastodynamic contact problem, the same code for every dimension: sets up the
+ * mesh and DoFs of the ProblemModel, the lumped mass, the contact layer and the Newton solver, then
+ * advances Newmark (classical or modified) step by step, recording the history (history.csv), the
+ * reference solution, profiles and VTU fields in Output/directory. Like the tutorial programs it
+ * has setup / do_time_step / output phases; the physics lives in the classes it composes.
+ *
+ * Every solved step passes the StepGuards (energy, tensile force, momentum) before it is accepted;
+ * a step that fails (Newton, an inverted element, a guard) is taken back and cut in half by the
+ * StepController, down to the minimum of Time integration/maximum step cuts. history.csv has one
+ * row per accepted (sub-)step, with its size and the number of cuts before it.
+ */
+template <int dim>
+class Simulation
+{
+public:
+  /**
+   * `log` receives the progress report (std::cout for the executable), from rank 0 only. All
+   * ranks of MPI_COMM_WORLD take part; files are written by rank 0 (VTU: one piece per rank).
+   */
+  Simulation(const RunParameters& parameters,
+             std::unique_ptr<ProblemModel<dim>> model,
+             std::ostream& log);
+
+  /**
+   * Runs from t = 0 (or, with a `resume_directory`, from the checkpoint.bin written there) to the
+   * end time. Output/directory must exist. Throws SolverFailure if a step cannot be solved,
+   * InputError if the checkpoint is missing or belongs to another problem, and RunInterrupted
+   * after writing a checkpoint when SIGINT or SIGTERM arrived; everything recorded up to that
+   * step is already on disk.
+   */
+  void run(const std::string& resume_directory = "");
+
+  /**
+   * Everything run() does before its first step, writing no file: builds the mesh, DoFs, bodies,
+   * contact candidates and monitor nodes, sizes an automatic penalty, checks the time step against
+   * the stability limit and sets the initial conditions. Throws the InputError a run would throw;
+   * `--validate` calls it. run() calls it first.
+   */
+  void prepare();
+
+  /** Whether run() prints the progress line (default true; `--quiet` switches it off). */
+  void set_progress(const bool show) { show_progress = show; }
+
+  /** The recorded history, one row per accepted (sub-)step including t = 0. */
+  const History& history() const { return step_history; }
+
+  /** Lumped nodal masses per DoF. */
+  const Vector<double>& lumped_mass() const { return mass; }
+
+  /** All nodes (body, reference position, DoFs); valid after run(). */
+  const std::vector<Node<dim>>& all_nodes() const { return nodes->nodes(); }
+
+  /** State at the last completed step; valid after run(). */
+  const Vector<double>& current_displacement() const { return displacement; }
+  const Vector<double>& current_velocity() const { return velocity; }
+
+  /** The node whose motion is recorded as u_tip_<b>, v_tip_<b>, a_tip_<b>, per body. */
+  const std::vector<Node<dim>>& monitor_nodes() const { return monitors; }
+
+private:
+  /** The state a failed step returns to. */
+  struct State
+  {
+    Vector<double> displacement, velocity, acceleration, internal_force, external_force;
+    typename ContactConstraints<dim>::State contact;
+    double tangent_scale; ///< the solver's, see ContactNewtonSolver::tangent_scale()
+    std::vector<double> body_forces, impulses;
+    double external_work;
+  };
+  State current_state() const;
+  void restore(const State& state);
+
+  /** What history.csv, the guards and the log read about the current state. */
+  struct Measures
+  {
+    double kinetic_energy, strain_energy, acceleration_energy, algorithmic_energy, contact_force,
+        force_imbalance;
+    std::vector<double> momenta;
+  };
+  Measures measure() const;
+  StepGuards::Figures guard_figures(const Measures& measures) const;
+
+  void setup();
+  /** omega dt of the stiffest penalty spring between its two lumped masses, sqrt(eps / m*) dt. */
+  double penalty_spring_omega_dt() const;
+  /**
+   * Contact/penalty factor = auto: where the bodies' highest mode is resolved (omega dt <= 2),
+   * lowers the springs to omega dt <= 1; logs the factor in force.
+   */
+  void size_automatic_penalty();
+  /**
+   * Warns when a penalty spring is the one unresolved frequency; throws InputError when the time
+   * step exceeds the stability limit of conditionally stable Newmark (2 beta < gamma).
+   */
+  void check_stability() const;
+  void set_initial_conditions();
+  /**
+   * Removes from the converged `increment` the momentum error of each body: a rigid translation
+   * along the impact direction cancels the body's residual summed along it (see the definition).
+   */
+  void balance_body_momenta(Vector<double>& increment) const;
+  /** Solves the step from `before` to `time` with the Newmark step size; throws SolverFailure. */
+  unsigned int do_time_step(const State& before);
+  /**
+   * Per body, the force along the impact direction on the nodes of its active pairs (M a + Q - W)
+   * plus its total external force, at the current state: with sum Q = 0 over a free body this is
+   * the total force that changes its momentum, up to the Newton residual of its other nodes.
+   */
+  std::vector<double> body_forces() const;
+  /** Per DoF: whether it belongs to a node of an active pair (at the current state). */
+  std::vector<bool> active_pair_dofs() const;
+  /** Adds the impulses of the step from `before` (Newmark-weighted forces plus rate corrections).
+   */
+  void accumulate_impulses(const State& before);
+  /**
+   * Appends a history row for the current state; `nominal_step` is the nominal step index if the
+   * state lies on the nominal time grid (profiles and VTU are written only there), else 0.
+   */
+  void record_step(const Measures& measures,
+                   unsigned int nominal_step,
+                   unsigned int linear_solves,
+                   unsigned int cuts);
+  /** Writes the reference solution at the recorded times and the run's summary. */
+  void write_reference_and_summary();
+
+  /** What must match between a checkpoint and the run that resumes it, as readable text. */
+  std::string problem_fingerprint() const;
+  /** Writes or reads everything a resumed run needs to repeat the uninterrupted one exactly. */
+  template <class Archive>
+  void serialize_state(Archive& archive);
+  /** Writes Output/directory/checkpoint.bin atomically (rank 0). */
+  void write_checkpoint();
+  /** Reads `directory`/checkpoint.bin; throws InputError if missing or of another problem. */
+  void read_checkpoint(const std::string& directory);
+
+  /** Counters for the progress line and the summary. */
+  struct Counters
+  {
+    unsigned int total_solves = 0, total_cuts = 0, steps_taken = 0;
+    std::vector<std::string> cut_places; ///< times of the first cuts
+  };
+  /** Q(u) - W at the last solve: what the contact force balances at a node. */
+  Vector<double> net_internal_force() const;
+  /** The nodal traction -p n on body A and p n on body B of every pair, p = `pressures`. */
+  Vector<double> contact_traction(const std::vector<double>& pressures) const;
+  /** Writes the contact pressure profile of the current step (surface contact only). */
+  void write_contact_pressure(const std::vector<double>& pressures) const;
+  std::vector<std::string> history_columns() const;
+
+  const RunParameters parameters;
+  const std::unique_ptr<ProblemModel<dim>> model;
+  const bool is_root_rank;
+  ConditionalOStream log;
+  Newmark newmark;
+  parallel::shared::Triangulation<dim> triangulation;
+  const FESystem<dim> fe;
+  /** The curved-cell mapping, its support points computed once from the manifolds. */
+  MappingQCache<dim> mapping;
+  DoFHandler<dim> dof_handler;
+  std::unique_ptr<NodeIndex<dim>> nodes;
+  std::unique_ptr<Kinematics<dim>> kinematics;
+  std::unique_ptr<ElasticBodies<dim>> bodies;
+  Vector<double> mass;
+  std::vector<types::global_dof_index> fixed_dofs;
+  std::unique_ptr<SurfaceTractions<dim>> loads;
+  Vector<double> external_force;                           ///< W at the current time
+  std::unique_ptr<NodeToNodeContact<dim>> surface_contact; ///< null: fixed-normal pairs only
+  std::unique_ptr<ContactConstraints<dim>> contact;
+  std::unique_ptr<ContactNewtonSolver<dim>> solver;
+  std::vector<Node<dim>> monitors;
+  unsigned int innermost_pair = 0; ///< candidate pair nearest to the axis (centre_pressure)
+  std::unique_ptr<FieldOutput<dim>> field_output;
+  std::set<unsigned int> profile_steps; ///< steps at which a profile is written
+  double penalty_factor =
+      0.; ///< the factor in force (Contact/penalty factor, or the automatic one)
+  unsigned int n_steps;
+  double time;
+  Vector<double> displacement, velocity, acceleration;
+  Vector<double> internal_force; ///< Q(u) at the current state
+  /** Per DoF: its body, and the impact-direction component of its unit vector. */
+  std::vector<unsigned int> dof_body;
+  std::vector<double> dof_direction;
+  std::vector<bool> is_contact_dof;     ///< a DoF of a node of some candidate pair
+  std::vector<bool> is_fixed_dof;       ///< held at zero (fixed_dofs)
+  std::vector<double> forces_on_bodies; ///< body_forces() at the current state
+  std::vector<double> impulses;         ///< per body, accumulated since t = 0
+  double external_work = 0.;            ///< work of the external forces since t = 0
+  StepGuards guards;
+  /**
+   * The energy the energy guard reads: E_0 plus the algorithmic-energy change of every accepted
+   * step, each evaluated with that step's size h (the weight (beta - gamma/2) h^2 of a.Ma depends
+   * on h, so E with the new h minus E with the old one would show a gain after every cut when beta
+   * != gamma/2), and the energy parts of the last accepted state.
+   */
+  double guarded_energy = 0.;
+  Measures accepted_measures{};
+  History step_history;
+  /** Rows of step_history on the nominal time grid (the Hertz comparison needs uniform steps). */
+  std::vector<unsigned int> nominal_rows;
+  TimerOutput timer;
+  std::unique_ptr<StepController> controller;
+  Counters counters;
+  bool show_progress = true;
+};
+} // namespace dyncontact

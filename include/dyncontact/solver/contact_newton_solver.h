@@ -1,0 +1,130 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/discretization/elastic_bodies.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/trilinos_vector.h>
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * Solves one implicit time step with contact: find the increment over the Newmark predictor and
+ * the multipliers such that
+ *   c M (u - u~) + Q(u) - W - G^T lambda = 0,  and the constraint rows of ContactConstraints,
+ * with c = 1/(beta dt^2) and u = u~ + increment, by Newton's method on the symmetric saddle-point
+ * system [K_eff, -G^T; -G, -D]. The active set is updated after every linear solve (a semi-smooth
+ * Newton); the step has converged when the residual is below the tolerance times the reference
+ * force |Q(u)| + |W| + |G^T lambda| (elastic, external and contact forces; not the inertia, whose
+ * unresolved high-frequency part can be arbitrarily large) plus a round-off floor of 1e3 eps
+ * (max diag(K_eff) |u| + |c M (u - u~)|), the active constraints hold to the gap tolerance, the
+ * last update left the active set unchanged (discrete complementarity: active pairs compressive
+ * and closed, inactive pairs open), and, if any pair is active, at least one linear solve was
+ * made. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment. The pairs' normals
+ * are those the contact layer holds on entry (the last converged configuration's); the solver
+ * never moves them, so the constraint rows are linear in u and the tangent is exact.
+ *
+ * Initial guess: the residual is first evaluated at the given guess (the Newmark predictor),
+ * without the tangent (using the diagonal of the last tangent for the force scale), so that steps
+ * the predictor already solves, such as free flight, cost no linear solve. Otherwise Newton starts
+ * from the last converged configuration u_n, not from the predictor: at time steps far beyond the
+ * periods of the small elements of a contact zone (omega dt >> 1) the trapezoidal rule keeps their
+ * high-frequency response undamped, with accelerations so large that the predictor's term
+ * dt^2 (1/2 - beta) a_n throws the contact zone a sizeable fraction of an element away (4 to 8
+ * times the step's strain energy on the finest sphere mesh). From there Newton converged to
+ * spurious roots of the nonconvex finite-strain energy: the total energy doubled in one step. u_n
+ * is a valid configuration, and in that regime a close one.
+ * A backtracking line search halves an update (up to 10 times) when the residual at its end cannot
+ * be evaluated (an inverted element) or grows while the active set stays the same, the residual
+ * measured as the force residual together with the active gaps times the largest tangent diagonal.
+ *
+ * Parallel layout: rows of the matrix are distributed like the DoFs, the multiplier rows belong to
+ * the last rank; the direct solver is Amesos KLU on one rank and Amesos MUMPS on several. Vectors
+ * passed in and out are whole on every rank.
+ *
+ * It owns the matrix and its fixed sparsity pattern; it does not know Newmark's update formulas.
+ */
+template <int dim>
+class ContactNewtonSolver
+{
+public:
+  /** What one step's solve did, for histories and logs. */
+  struct Report
+  {
+    unsigned int linear_solves;
+  };
+
+  /**
+   * `fixed_dofs` keep a zero increment. `length_scale` (e.g. the smallest element size) turns the
+   * relative tolerance into the gap tolerance used for activation and constraint convergence.
+   * `timer` receives the phases "assembly" and "linear solve".
+   */
+  ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
+                      const ElasticBodies<dim>& bodies,
+                      ContactConstraints<dim>& contact,
+                      const Vector<double>& lumped_mass,
+                      const std::vector<types::global_dof_index>& fixed_dofs,
+                      const NewtonParameters& parameters,
+                      double length_scale,
+                      TimerOutput& timer);
+
+  /**
+   * Solves the step, with external forces W at t_{n+1}, for the increment u_{n+1} - u~ over the
+   * predictor u~ (initial guess: the value `increment` holds on entry, usually zero); on exit
+   * u_{n+1} = predictor + increment. The contact multipliers and active set are updated in place.
+   * Unless the initial guess is already the answer, Newton iterates from `restart_increment`
+   * instead (u_n - u~, i.e. from the last converged configuration; see the class documentation).
+   * Throws SolverFailure if Newton does not converge within the iteration limit or the linear
+   * solver fails.
+   */
+  Report solve(const Vector<double>& predictor,
+               double inertia_factor,
+               const Vector<double>& external_force,
+               const Vector<double>& restart_increment,
+               Vector<double>& increment);
+
+  /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */
+  const Vector<double>& internal_force() const { return internal_force_values; }
+
+  /**
+   * max diag(K_eff) of the last tangent (0: none yet), which scales the round-off floor and decides
+   * whether a step's first evaluation needs a tangent; a checkpoint keeps it so that a resumed run
+   * repeats the uninterrupted one exactly.
+   */
+  double tangent_scale() const { return largest_tangent_diagonal; }
+  void set_tangent_scale(const double scale) { largest_tangent_diagonal = scale; }
+
+  /** Strain energy at the same displacement as internal_force(). */
+  double strain_energy() const { return strain_energy_value; }
+
+private:
+  /** Solves matrix * solution = right_hand_side; both vectors whole on every rank. */
+  Vector<double> solve_linear_system(const Vector<double>& right_hand_side) const;
+
+  const DoFHandler<dim>& dof_handler;
+  const ElasticBodies<dim>& bodies;
+  ContactConstraints<dim>& contact;
+  const Vector<double>& lumped_mass;
+  const NewtonParameters parameters;
+  const double gap_tolerance;
+  const MPI_Comm communicator;
+  TimerOutput& timer;
+  const bool owns_multiplier_rows;
+  std::vector<bool> is_fixed;
+  std::vector<types::global_dof_index> locally_owned_fixed_rows;
+  IndexSet locally_owned_rows;
+  TrilinosWrappers::SparseMatrix matrix;
+  Vector<double> internal_force_values;
+  /** max diag(K_eff) at the last tangent assembly (0: none yet), for the force scale. */
+  double largest_tangent_diagonal = 0.;
+  double strain_energy_value      = 0.;
+};
+} // namespace dyncontact

@@ -1,0 +1,101 @@
+#include <dyncontact/base/command_line.h>
+
+#include <algorithm>
+
+namespace dyncontact
+{
+CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
+{
+  CommandLine command_line;
+  bool action_given     = false;
+  const auto set_action = [&](const Action action)
+  {
+    if (action_given && command_line.action != action)
+      throw InputError("conflicting options; see --help.");
+    command_line.action = action;
+    action_given        = true;
+  };
+  const auto value_of = [&](unsigned int& i) -> const std::string&
+  {
+    if (i + 1 >= arguments.size())
+      throw InputError("option " + arguments[i] + " needs a value; see --help.");
+    return arguments[++i];
+  };
+
+  for (unsigned int i = 0; i < arguments.size(); ++i)
+  {
+    const std::string& argument = arguments[i];
+    if (argument == "--help" || argument == "-h")
+      set_action(Action::help);
+    else if (argument == "--print-parameters")
+      set_action(Action::print_parameters);
+    else if (argument == "--validate")
+    {
+      set_action(Action::validate);
+      command_line.parameter_file = value_of(i);
+    }
+    else if (argument == "--set")
+      command_line.overrides.push_back(value_of(i));
+    else if (argument == "--output")
+      command_line.overrides.push_back("Output/directory=" + value_of(i));
+    else if (argument == "--quiet")
+      command_line.quiet = true;
+    else if (argument == "--resume")
+    {
+      // The resumed run continues in the interrupted run's directory.
+      command_line.resume_directory = value_of(i);
+      command_line.overrides.push_back("Output/directory=" + command_line.resume_directory);
+    }
+    else if (!argument.empty() && argument[0] == '-')
+      throw InputError("unknown option '" + argument + "'; see --help.");
+    else if (command_line.parameter_file.empty())
+    {
+      if (!action_given)
+        set_action(Action::run);
+      command_line.parameter_file = argument;
+    }
+    else
+      throw InputError("more than one parameter file given ('" + command_line.parameter_file +
+                       "' and '" + argument + "').");
+  }
+  if (!command_line.resume_directory.empty() &&
+      std::count_if(command_line.overrides.begin(),
+                    command_line.overrides.end(),
+                    [](const std::string& o) { return o.rfind("Output/directory=", 0) == 0; }) > 1)
+    throw InputError("--resume DIR continues in DIR; do not give --output or Output/directory "
+                     "with it.");
+  if (!action_given && !command_line.overrides.empty())
+    throw InputError("no parameter file given; see --help.");
+  if ((command_line.action == Action::run || command_line.action == Action::validate) &&
+      command_line.parameter_file.empty())
+    throw InputError("no parameter file given; see --help.");
+  return command_line;
+}
+
+std::string CommandLine::usage()
+{
+  return "dyncontact: implicit dynamics of elastic bodies in contact (Taylor & Papadopoulos "
+         "1993).\n"
+         "\n"
+         "Usage:\n"
+         "  dyncontact FILE.prm [--set \"Section/entry=value\"]... [--output DIR] [--quiet]\n"
+         "      run the problem; every --set overrides one entry of FILE.prm (repeatable),\n"
+         "      --output DIR is short for --set \"Output/directory=DIR\".\n"
+         "      --quiet leaves out the progress lines (warnings and the summary stay).\n"
+         "  dyncontact FILE.prm --resume DIR [--set ...]\n"
+         "      continue the interrupted run of FILE.prm from DIR/checkpoint.bin, in DIR.\n"
+         "  dyncontact --validate FILE.prm [--set ...]\n"
+         "      check the parameters and the mesh as a run does before its first step, run\n"
+         "      nothing, write nothing.\n"
+         "  dyncontact --print-parameters\n"
+         "      print every entry with its documentation, default and allowed values.\n"
+         "  dyncontact --help\n"
+         "\n"
+         "A run writes into Output/directory: history.csv (one row per step), the reference\n"
+         "solution (exact.csv for bars, hertz.csv and impact_summary.csv for two identical\n"
+         "spheres), profile_t<T>.csv (and contact_pressure_t<T>.csv, cells.csv for meshes),\n"
+         "solution_*.vtu with solution.pvd, original.prm (the input as given) and\n"
+         "parameters.prm (every value in effect). It first removes these files of an earlier\n"
+         "run from the directory (other files stay).\n";
+}
+} // namespace dyncontact

@@ -1,0 +1,892 @@
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/material/material.h>
+#include <dyncontact/models/gmsh_mesh.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <numeric>
+#include <optional>
+#include <set>
+#include <sstream>
+
+namespace dyncontact
+{
+namespace
+{
+/**
+ * The text deal.II attaches to one of its exceptions, without file/line decoration, on one line:
+ * every run of white space (line breaks included) becomes one blank.
+ */
+std::string exception_text(const ExceptionBase& exception)
+{
+  std::ostringstream text;
+  exception.print_info(text);
+  std::istringstream words(text.str());
+  std::string word, message;
+  while (words >> word)
+    message += (message.empty() ? "" : " ") + word;
+  return message;
+}
+
+/** Reads a double that must be strictly positive, naming `section/entry` if it is not. */
+double get_positive(ParameterHandler& prm, const std::string& entry, const std::string& section)
+{
+  const double value = prm.get_double(entry);
+  if (!(value > 0.))
+    throw InputError(section + "/" + entry + " = " + prm.get(entry) +
+                     " is not allowed: it must be > 0.");
+  return value;
+}
+
+/** Reads a number that must lie in [low, high], naming `section/entry` and the range if not. */
+double get_in_range(ParameterHandler& prm,
+                    const std::string& entry,
+                    const std::string& section,
+                    const double low,
+                    const double high)
+{
+  const double value = prm.get_double(entry);
+  if (!(value >= low && value <= high))
+    throw InputError(section + "/" + entry + " = " + prm.get(entry) +
+                     " is not allowed: it must lie in " + format_number(low) + ".." +
+                     format_number(high) + ".");
+  return value;
+}
+
+/** Splits "A/B/entry=value" into subsection path, entry and value. */
+struct Override
+{
+  std::vector<std::string> subsections;
+  std::string entry;
+  std::string value;
+};
+
+Override split_override(const std::string& text)
+{
+  const auto equal_sign = text.find('=');
+  if (equal_sign == std::string::npos || equal_sign == 0)
+    throw InputError("--set '" + text + "': expected \"Section/entry=value\".");
+  Override result;
+  result.value                  = Utilities::trim(text.substr(equal_sign + 1));
+  std::vector<std::string> path = Utilities::split_string_list(text.substr(0, equal_sign), '/');
+  result.entry                  = path.back();
+  path.pop_back();
+  result.subsections = path;
+  return result;
+}
+
+/**
+ * Applies one override. With `ignore_unknown`, an entry that is not declared is skipped (used by
+ * the first parsing pass, which only knows the number of bars).
+ */
+void apply_override(ParameterHandler& prm, const std::string& text, const bool ignore_unknown)
+{
+  const Override override_entry = split_override(text);
+  for (const auto& subsection : override_entry.subsections)
+    prm.enter_subsection(subsection);
+  try
+  {
+    prm.set(override_entry.entry, override_entry.value);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    for (unsigned int i = 0; i < override_entry.subsections.size(); ++i)
+      prm.leave_subsection();
+    if (ignore_unknown)
+      return;
+    throw InputError("--set '" + text + "': " + exception_text(exception));
+  }
+  for (unsigned int i = 0; i < override_entry.subsections.size(); ++i)
+    prm.leave_subsection();
+}
+
+/**
+ * ParameterHandler's internal path "Geometry.Bar_202.left_20end" back to what the user writes,
+ * "Geometry/Bar 2/left end": '.' separates subsections and "_xx" is the hex code of a character.
+ */
+std::string demangle_entry_path(const std::string& mangled)
+{
+  std::string path;
+  for (unsigned int i = 0; i < mangled.size(); ++i)
+    if (mangled[i] == '.')
+      path += '/';
+    else if (mangled[i] == '_' && i + 2 < mangled.size())
+    {
+      path += static_cast<char>(std::stoi(mangled.substr(i + 1, 2), nullptr, 16));
+      i += 2;
+    }
+    else
+      path += mangled[i];
+  return path;
+}
+
+/**
+ * Sends what is written to std::cerr into a string while it exists: deal.II's FunctionParser
+ * prints muParser's diagnosis there, line by line, before it throws.
+ */
+class CapturedErrorStream
+{
+public:
+  CapturedErrorStream() : original(std::cerr.rdbuf(captured.rdbuf())) {}
+  ~CapturedErrorStream() { std::cerr.rdbuf(original); }
+  CapturedErrorStream(const CapturedErrorStream&)            = delete;
+  CapturedErrorStream& operator=(const CapturedErrorStream&) = delete;
+
+private:
+  std::ostringstream captured;
+  std::streambuf* original;
+};
+
+/**
+ * Parses the 2-component ParsedFunction in subsection `name` and evaluates each component once,
+ * at the origin and t = 0: muParser compiles an expression only when it is first evaluated, so
+ * an unknown function or a syntax error shows here and not in the middle of a run. Any problem
+ * becomes an InputError naming the entry and the expression.
+ */
+std::shared_ptr<Functions::ParsedFunction<2>>
+parse_function(ParameterHandler& prm, const std::string& name, const std::string& section)
+{
+  auto function = std::make_shared<Functions::ParsedFunction<2>>(2);
+  std::optional<std::string> error;
+  prm.enter_subsection(name);
+  const std::string expression = prm.get("Function expression");
+  const std::string constants  = prm.get("Function constants");
+  try
+  {
+    function->parse_parameters(prm);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    error = exception_text(exception);
+  }
+  prm.leave_subsection();
+  if (!error)
+    try
+    {
+      const CapturedErrorStream quiet;
+      for (unsigned int component = 0; component < function->n_components; ++component)
+        function->value(Point<2>(), component);
+    }
+    catch (const ExceptionBase& exception)
+    {
+      error = exception_text(exception);
+    }
+  if (error)
+    throw InputError(section + "/" + name + "/Function expression = '" + expression + "'" +
+                     (constants.empty() ? "" : " (constants '" + constants + "')") + ": " + *error +
+                     "; it must give 2 components '(x-component); (y-component)' of x = r, y = z "
+                     "and t in muParser syntax.");
+  return function;
+}
+
+std::string bar_section(const unsigned int bar)
+{
+  return "Bar " + std::to_string(bar + 1);
+}
+
+/**
+ * How close the ends of bars `a` and `b` (or of a bar and the wall at `wall`) count as touching:
+ * 1e-9 of the shorter element, and at least the round-off of the positions (8 units in the last
+ * place of the largest |x| involved), which matters far from the origin.
+ */
+double touching_tolerance(const BarParameters& a, const BarParameters& b, const double wall = 0.)
+{
+  const double largest_position = std::max({std::abs(a.left_end),
+                                            std::abs(a.right_end()),
+                                            std::abs(b.left_end),
+                                            std::abs(b.right_end()),
+                                            std::abs(wall)});
+  return std::max(1e-9 * std::min(a.element_length(), b.element_length()),
+                  8. * std::numeric_limits<double>::epsilon() * largest_position);
+}
+
+/** What the first parsing pass finds out: the kind of problem and the number of bodies. */
+struct ProblemSize
+{
+  GeometryKind geometry;
+  unsigned int n_bars;
+  unsigned int n_bodies;
+};
+
+/**
+ * Declares the sections a problem of the given size uses: the bars' `Geometry` for bars, `Mesh`
+ * and `Bodies` for mesh-based problems (both when `size` is empty, for the documentation).
+ */
+void declare_all(ParameterHandler& prm, const std::optional<ProblemSize>& size)
+{
+  ProblemParameters::declare_parameters(prm);
+  TimeIntegrationParameters::declare_parameters(prm);
+  ContactParameters::declare_parameters(prm);
+  NewtonParameters::declare_parameters(prm);
+  GuardParameters::declare_parameters(prm);
+  if (!size || size->geometry == GeometryKind::bars)
+    GeometryParameters::declare_parameters(prm, size ? size->n_bars : 1);
+  if (!size || size->geometry != GeometryKind::bars)
+  {
+    MeshParameters::declare_parameters(prm);
+    BodiesParameters::declare_parameters(prm, size ? size->n_bodies : 1);
+  }
+  OutputParameters::declare_parameters(prm);
+}
+
+const std::string geometry_names = "bars|axisymmetric mesh";
+
+/** Parses `filename` into `prm`, turning deal.II's exceptions into InputError. */
+void parse_file(ParameterHandler& prm, const std::string& filename, const bool skip_undefined)
+{
+  try
+  {
+    prm.parse_input(filename, "", skip_undefined);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    throw InputError("parameter file '" + filename + "': " + exception_text(exception));
+  }
+}
+} // namespace
+
+void ProblemParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Problem");
+  prm.declare_entry("geometry",
+                    "bars",
+                    Patterns::Selection(geometry_names),
+                    "Kind of problem. bars: 1D bars on the x axis (subsection Geometry). "
+                    "axisymmetric mesh: bodies of revolution in the (r, z) half plane from a gmsh "
+                    "mesh, 9-node quadrilaterals (subsections Mesh and Bodies).");
+  prm.leave_subsection();
+}
+
+void ProblemParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Problem");
+  geometry = prm.get("geometry") == "bars" ? GeometryKind::bars : GeometryKind::axisymmetric_mesh;
+  prm.leave_subsection();
+}
+
+void MeshParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Mesh");
+  prm.declare_entry("file",
+                    "",
+                    Patterns::FileName(),
+                    "gmsh mesh: a .geo file (meshed through the gmsh API) or a .msh file. A "
+                    "relative path is relative to the directory of the parameter file. Physical "
+                    "surface b is body b, physical curve 1 the symmetry axis, physical curve b + 1 "
+                    "the surface of body b (see meshes/sphere.geo).",
+                    true);
+  prm.declare_entry("geo parameters",
+                    "",
+                    Patterns::Map(Patterns::Anything(), Patterns::Double()),
+                    "Numbers set in a .geo file before meshing, as 'name: value' pairs separated "
+                    "by commas, e.g. 'R: 8, Refinement: 1' (see the file's header for its "
+                    "parameters). Ignored for .msh files.");
+  prm.leave_subsection();
+}
+
+void MeshParameters::parse_parameters(ParameterHandler& prm,
+                                      const std::string& parameter_file_directory)
+{
+  prm.enter_subsection("Mesh");
+  const std::filesystem::path given = prm.get("file");
+  file = (given.is_relative() ? std::filesystem::path(parameter_file_directory) / given : given)
+             .lexically_normal()
+             .string();
+  if (!std::filesystem::is_regular_file(file))
+    throw InputError("Mesh/file = '" + given.string() + "': no such file ('" + file +
+                     "'; relative paths are taken relative to the parameter file).");
+  const std::string extension = std::filesystem::path(file).extension().string();
+  if (extension != ".geo" && extension != ".msh")
+    throw InputError("Mesh/file = '" + given.string() + "': unknown extension '" + extension +
+                     "'; allowed are .geo (meshed by gmsh) and .msh (a gmsh mesh).");
+  const std::string given_parameters = prm.get("geo parameters");
+  geo_parameters.clear();
+  for (const auto& pair : Utilities::split_string_list(given_parameters, ','))
+  {
+    const std::vector<std::string> name_and_value = Utilities::split_string_list(pair, ':');
+    geo_parameters[name_and_value[0]]             = Utilities::string_to_double(name_and_value[1]);
+  }
+  prm.leave_subsection();
+
+  if (geo_parameters.empty())
+    return;
+  if (extension == ".msh")
+    throw InputError("Mesh/geo parameters = '" + given_parameters + "': Mesh/file = '" +
+                     given.string() +
+                     "' is a finished mesh and takes no parameters; they apply to .geo files.");
+  const std::vector<std::string> known = geo_file_parameters(file);
+  for (const auto& [name, value] : geo_parameters)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+    {
+      std::string names;
+      for (const std::string& known_name : known)
+        names += (names.empty() ? "" : ", ") + known_name;
+      throw InputError("Mesh/geo parameters = '" + given_parameters + "': '" + given.string() +
+                       "' has no parameter '" + name +
+                       "'; its parameters are: " + (names.empty() ? "none" : names) + ".");
+    }
+}
+
+void BodyParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("material",
+                    "linear elastic",
+                    Patterns::Selection(material_names()),
+                    "Hyperelastic law: linear elastic (small strain), st venant-kirchhoff, or "
+                    "neo-hookean (compressible, W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2).");
+  prm.declare_entry("Young's modulus", "1", Patterns::Double(0.), "E [force/length^2], > 0.", true);
+  prm.declare_entry(
+      "Poisson's ratio", "0.3", Patterns::Double(-1., 0.5), "nu [-], -1 < nu < 0.5.", true);
+  prm.declare_entry("density", "1", Patterns::Double(0.), "rho [mass/length^3], > 0.", true);
+  prm.declare_entry("monitor point",
+                    "0, 0",
+                    Patterns::List(Patterns::Double(), 2, 2),
+                    "(r, z) of the point whose nearest node of this body is reported in the "
+                    "history as u_tip_<b>, v_tip_<b>, a_tip_<b> (axial components).");
+  prm.enter_subsection("Initial velocity");
+  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
+  prm.leave_subsection();
+  // Documented in the README: (T_r; T_z) of x = r, y = z, t, force per unit reference area.
+  prm.enter_subsection("Surface traction");
+  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
+  prm.leave_subsection();
+}
+
+void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+{
+  material       = prm.get("material");
+  youngs_modulus = get_positive(prm, "Young's modulus", section);
+  poissons_ratio = prm.get_double("Poisson's ratio");
+  if (!(poissons_ratio > -1. && poissons_ratio < 0.5))
+    throw InputError(section + "/Poisson's ratio = " + prm.get("Poisson's ratio") +
+                     " is not allowed: it must satisfy -1 < nu < 0.5.");
+  density                              = get_positive(prm, "density", section);
+  const std::vector<std::string> point = Utilities::split_string_list(prm.get("monitor point"));
+  monitor_point =
+      Point<2>(Utilities::string_to_double(point[0]), Utilities::string_to_double(point[1]));
+  initial_velocity = parse_function(prm, "Initial velocity", section);
+  surface_traction = parse_function(prm, "Surface traction", section);
+}
+
+void BodiesParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_bodies)
+{
+  prm.enter_subsection("Bodies");
+  prm.declare_entry("number of bodies",
+                    "1",
+                    Patterns::Integer(1, 100),
+                    "Number of bodies of the mesh [-], 1..100; body b is described in subsection "
+                    "'Body b' and is physical surface b of the mesh.");
+  for (unsigned int body = 0; body < n_bodies; ++body)
+  {
+    prm.enter_subsection("Body " + std::to_string(body + 1));
+    BodyParameters::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+  prm.leave_subsection();
+}
+
+void BodiesParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Bodies");
+  bodies.resize(prm.get_integer("number of bodies"));
+  for (unsigned int body = 0; body < bodies.size(); ++body)
+  {
+    const std::string name = "Body " + std::to_string(body + 1);
+    prm.enter_subsection(name);
+    bodies[body].parse_parameters(prm, "Bodies/" + name);
+    prm.leave_subsection();
+  }
+  prm.leave_subsection();
+}
+
+void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Time integration");
+  prm.declare_entry("scheme",
+                    "modified",
+                    Patterns::Selection("classical|modified"),
+                    "Newmark variant. classical: contact constrains displacements only. modified: "
+                    "Taylor & Papadopoulos (1993), normal velocity and acceleration of every "
+                    "active contact pair are made continuous after each step (paper eqs. 19-24).");
+  prm.declare_entry("beta",
+                    "0.25",
+                    Patterns::Double(0., 0.5),
+                    "Newmark beta [-], 0 < beta <= 0.5. Unconditionally stable when "
+                    "2 beta >= gamma; beta = 0.25 is the trapezoidal rule. beta = 0 (explicit "
+                    "central difference) is rejected: u_{n+1} would not depend on the contact "
+                    "force, so no constraint could act on it.");
+  prm.declare_entry("gamma",
+                    "0.5",
+                    Patterns::Double(0.5, 1.),
+                    "Newmark gamma [-], 0.5 <= gamma <= 1. Second order only for gamma = 0.5; "
+                    "gamma > 0.5 adds numerical dissipation.");
+  prm.declare_entry("time step",
+                    "0.1",
+                    Patterns::Double(0.),
+                    "Time step dt [time], > 0. The Courant number c dt / h is printed at start.");
+  prm.declare_entry("end time", "30", Patterns::Double(0.), "End of the run [time], > 0.");
+  prm.declare_entry("maximum step cuts",
+                    "10",
+                    Patterns::Integer(),
+                    "Step control [-], 0..20: a step that fails (Newton does not converge, an "
+                    "element inverts, or a guard of subsection Guards trips) is retried with half "
+                    "the size, at most this many times, i.e. down to time step / 2^cuts; the size "
+                    "grows back after two accepted sub-steps. If the smallest step still fails the "
+                    "run stops (exit 3) keeping its output. 0 = never cut.");
+  prm.leave_subsection();
+}
+
+void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Time integration");
+  scheme = prm.get("scheme") == "modified" ? NewmarkScheme::modified : NewmarkScheme::classical;
+  beta   = prm.get_double("beta");
+  gamma  = prm.get_double("gamma");
+  if (!(beta > 0.))
+    throw InputError("Time integration/beta = 0 is not supported: with beta = 0 the displacement "
+                     "u_{n+1} is explicit and the contact constraint cannot act on it. Use "
+                     "0 < beta <= 0.5 (the paper's nearly explicit choice is 0.001).");
+  time_step = get_positive(prm, "time step", "Time integration");
+  end_time  = get_positive(prm, "end time", "Time integration");
+  if (end_time / time_step > 1e8)
+    throw InputError("Time integration/end time = " + prm.get("end time") +
+                     " with time step = " + prm.get("time step") +
+                     " asks for more than 1e8 steps; at most 1e8 are allowed.");
+  max_step_cuts =
+      static_cast<unsigned int>(get_in_range(prm, "maximum step cuts", "Time integration", 0, 20));
+  prm.leave_subsection();
+}
+
+unsigned int TimeIntegrationParameters::n_steps() const
+{
+  // At least one: an end time below 1e-9 of the time step is not a run of zero steps.
+  return std::max(1u, static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9)));
+}
+
+void ContactParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Contact");
+  prm.declare_entry("formulation",
+                    "lagrange multiplier",
+                    Patterns::Selection("lagrange multiplier|penalty"),
+                    "Enforcement of the non-penetration condition g >= 0. lagrange multiplier: "
+                    "exact, one multiplier unknown per candidate pair (saddle-point solve). "
+                    "penalty: force eps <-g> along the normal (allows small penetration).");
+  prm.declare_entry("penalty factor",
+                    "auto",
+                    Patterns::Anything(),
+                    "Penalty only: stiffness eps of a pair [force/length] = this factor [-] times "
+                    "E A / h of the stiffer side; a number > 0, or auto. Bars: A the "
+                    "cross-section, h the element length at the contact node; meshes: A the "
+                    "pair's contact area (2 pi r weighted), h the shortest cell edge. "
+                    "auto: 100 where the time step does not resolve the bodies' highest mode "
+                    "(omega dt > 2, the quasi-static contact of the spheres: penetration about "
+                    "1e-3 of the Hertz approach), else the largest factor <= 100 whose stiffest "
+                    "spring has omega dt <= 1 (wave problems such as the bars: an unresolved "
+                    "spring chatters, forces several times the exact ones). The run prints the "
+                    "factor it chose. "
+                    "With the classical scheme and beta < gamma/2 a large penalty needs a small "
+                    "time step (a run refuses one above the stability limit).");
+  prm.leave_subsection();
+}
+
+void ContactParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Contact");
+  formulation              = prm.get("formulation") == "penalty" ? ContactFormulation::penalty
+                                                                 : ContactFormulation::lagrange_multiplier;
+  const std::string factor = prm.get("penalty factor");
+  automatic_penalty        = factor == "auto";
+  penalty_factor           = quasi_static_penalty_factor;
+  if (!automatic_penalty)
+  {
+    std::istringstream stream(factor);
+    if (!(stream >> penalty_factor) || !(stream >> std::ws).eof() || !(penalty_factor > 0.))
+      throw InputError("Contact/penalty factor = " + factor +
+                       " is not allowed: it must be a number > 0 or auto.");
+  }
+  prm.leave_subsection();
+}
+
+void NewtonParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Newton");
+  prm.declare_entry("maximum iterations",
+                    "25",
+                    Patterns::Integer(2, 1000),
+                    "Maximum number of linear solves per time step, including the re-solves "
+                    "after active-set changes [-], 2..1000 (an active-set change needs two). "
+                    "Exceeding it stops the run with a "
+                    "message; the output written so far is kept.");
+  prm.declare_entry(
+      "residual tolerance",
+      "1e-10",
+      Patterns::Double(),
+      "Newton converges when the residual norm is below this fraction of the "
+      "reference force |Q(u)| + |W| + |G^T lambda| (elastic, external and contact "
+      "forces; not the inertia) plus a round-off floor, every active pair is closed to "
+      "this fraction of the smallest cell diameter and compressive, every inactive "
+      "pair open to it, and, with active pairs, after at least one linear solve "
+      "[-], 1e-16..1e-6. Looser values are rejected: they leave residuals at the "
+      "contact nodes that break the momentum balance (1e-6 relative) of a step.");
+  prm.leave_subsection();
+}
+
+void NewtonParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Newton");
+  max_iterations     = prm.get_integer("maximum iterations");
+  residual_tolerance = get_in_range(prm, "residual tolerance", "Newton", 1e-16, 1e-6);
+  prm.leave_subsection();
+}
+
+void GuardParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Guards");
+  prm.declare_entry("energy",
+                    "true",
+                    Patterns::Bool(),
+                    "Reject a step whose algorithmic energy exceeds the initial energy plus the "
+                    "work of the external forces (frictionless elastic contact cannot gain "
+                    "energy). A rejected step is cut (Time integration/maximum step cuts).");
+  prm.declare_entry("energy tolerance",
+                    "1e-4",
+                    Patterns::Double(),
+                    "Allowed energy gain, relative to the initial energy (for bodies starting at "
+                    "rest: the largest energy of the run) [-], 0..1.");
+  prm.declare_entry("tensile force",
+                    "true",
+                    Patterns::Bool(),
+                    "Reject a step whose recovered total contact force is tensile.");
+  prm.declare_entry("tensile force tolerance",
+                    "1e-4",
+                    Patterns::Double(),
+                    "Allowed tension, relative to the largest contact force of the run (or the sum "
+                    "of the step's |multipliers|) [-], 0..1.");
+  prm.declare_entry("momentum",
+                    "true",
+                    Patterns::Bool(),
+                    "Reject a step after which a body's momentum change (along the impact "
+                    "direction) differs from the impulse it received from the contact and the "
+                    "external forces.");
+  prm.declare_entry("momentum tolerance",
+                    "1e-6",
+                    Patterns::Double(),
+                    "Allowed difference, relative to the largest total momentum of the run "
+                    "[-], 0..1.");
+  prm.leave_subsection();
+}
+
+void GuardParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Guards");
+  energy                  = prm.get_bool("energy");
+  energy_tolerance        = get_in_range(prm, "energy tolerance", "Guards", 0., 1.);
+  tensile_force           = prm.get_bool("tensile force");
+  tensile_force_tolerance = get_in_range(prm, "tensile force tolerance", "Guards", 0., 1.);
+  momentum                = prm.get_bool("momentum");
+  momentum_tolerance      = get_in_range(prm, "momentum tolerance", "Guards", 0., 1.);
+  prm.leave_subsection();
+}
+
+double BarParameters::wave_speed() const
+{
+  return std::sqrt(youngs_modulus / density);
+}
+
+void BarParameters::declare_parameters(ParameterHandler& prm)
+{
+  // Every entry of a bar must be given: a bar the user forgot must not appear with defaults.
+  prm.declare_entry(
+      "left end", "0", Patterns::Double(), "x of the bar's left end at t = 0 [length].", true);
+  prm.declare_entry("length", "10", Patterns::Double(0.), "Bar length L [length], > 0.", true);
+  prm.declare_entry("number of elements",
+                    "100",
+                    Patterns::Integer(1, 10000000),
+                    "Number of equal 2-node linear elements along the bar [-], >= 1.",
+                    true);
+  prm.declare_entry("Young's modulus", "1", Patterns::Double(0.), "E [force/length^2], > 0.", true);
+  prm.declare_entry("density", "1", Patterns::Double(0.), "rho [mass/length^3], > 0.", true);
+  prm.declare_entry("cross-section area", "1", Patterns::Double(0.), "A [length^2], > 0.", true);
+  prm.declare_entry("initial velocity",
+                    "0",
+                    Patterns::Double(),
+                    "Uniform velocity along +x at t = 0 [length/time]; the bar starts "
+                    "stress-free.",
+                    true);
+}
+
+void BarParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+{
+  left_end         = prm.get_double("left end");
+  length           = get_positive(prm, "length", section);
+  n_elements       = prm.get_integer("number of elements");
+  youngs_modulus   = get_positive(prm, "Young's modulus", section);
+  density          = get_positive(prm, "density", section);
+  area             = get_positive(prm, "cross-section area", section);
+  initial_velocity = prm.get_double("initial velocity");
+}
+
+void GeometryParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_bars)
+{
+  prm.enter_subsection("Geometry");
+  prm.declare_entry("number of bars",
+                    "1",
+                    Patterns::Integer(1, 100),
+                    "Number of bars [-], 1..100; bar b is described in subsection 'Bar b' and is "
+                    "body b of the outputs. Contact is checked between facing ends of bars "
+                    "that are neighbours along x, and between the rightmost bar and the wall.");
+  for (unsigned int bar = 0; bar < n_bars; ++bar)
+  {
+    prm.enter_subsection(bar_section(bar));
+    BarParameters::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+  prm.enter_subsection("Rigid wall");
+  prm.declare_entry("enabled", "false", Patterns::Bool(), "Whether a fixed rigid wall exists.");
+  prm.declare_entry("position",
+                    "0",
+                    Patterns::Double(),
+                    "x of the wall [length]. The wall faces -x: every bar must lie to its left "
+                    "(touching is allowed).");
+  prm.leave_subsection();
+  prm.leave_subsection();
+}
+
+void GeometryParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Geometry");
+  const unsigned int n_bars = prm.get_integer("number of bars");
+  bars.resize(n_bars);
+  for (unsigned int bar = 0; bar < n_bars; ++bar)
+  {
+    prm.enter_subsection(bar_section(bar));
+    bars[bar].parse_parameters(prm, "Geometry/" + bar_section(bar));
+    prm.leave_subsection();
+  }
+  prm.enter_subsection("Rigid wall");
+  wall_enabled  = prm.get_bool("enabled");
+  wall_position = prm.get_double("position");
+  prm.leave_subsection();
+  prm.leave_subsection();
+
+  // Positions are compared with a tolerance: a left end typed as 0.3 and a right end computed as
+  // 0.1 + 0.2 = 0.30000000000000004 touch. Within it, bodies touch and are snapped together, so
+  // that the reference gap is exactly zero and contact starts closed; beyond it they overlap.
+  for (unsigned int a = 0; a < n_bars; ++a)
+    for (unsigned int b = a + 1; b < n_bars; ++b)
+    {
+      const double tolerance = touching_tolerance(bars[a], bars[b]);
+      const double overlap   = std::min(bars[a].right_end(), bars[b].right_end()) -
+                             std::max(bars[a].left_end, bars[b].left_end);
+      if (overlap > tolerance)
+        throw InputError(
+            "Geometry: Bar " + std::to_string(a + 1) + " [" + format_exact(bars[a].left_end) +
+            ", " + format_exact(bars[a].right_end()) + "] and Bar " + std::to_string(b + 1) + " [" +
+            format_exact(bars[b].left_end) + ", " + format_exact(bars[b].right_end()) +
+            "] overlap at t = 0 by " + format_number(overlap) + "; bars may touch (to " +
+            format_number(tolerance) + ", 1e-9 of the shorter element) but not overlap.");
+    }
+  std::vector<unsigned int> x_order(n_bars);
+  std::iota(x_order.begin(), x_order.end(), 0u);
+  std::sort(x_order.begin(),
+            x_order.end(),
+            [this](const unsigned int a, const unsigned int b)
+            { return bars[a].left_end < bars[b].left_end; });
+  for (unsigned int i = 0; i + 1 < n_bars; ++i)
+  {
+    const BarParameters& left = bars[x_order[i]];
+    BarParameters& right      = bars[x_order[i + 1]];
+    if (right.left_end - left.right_end() <= touching_tolerance(left, right))
+      right.left_end = left.right_end();
+  }
+
+  if (!wall_enabled)
+    return;
+  const BarParameters& rightmost = bars[x_order.back()];
+  const double tolerance         = touching_tolerance(rightmost, rightmost, wall_position);
+  // Every bar lies left of the rightmost one's right end: the bars do not overlap.
+  if (rightmost.right_end() - wall_position > tolerance)
+    throw InputError("Geometry/Rigid wall/position = " + format_exact(wall_position) +
+                     " is left of the right end " + format_exact(rightmost.right_end()) +
+                     " of Bar " + std::to_string(x_order.back() + 1) + " [" +
+                     format_exact(rightmost.left_end) + ", " + format_exact(rightmost.right_end()) +
+                     "], which reaches " + format_number(rightmost.right_end() - wall_position) +
+                     " past it; the wall faces -x, so every bar must lie at x <= position "
+                     "(touching, to " +
+                     format_number(tolerance) + " = 1e-9 of an element, is allowed).");
+  if (wall_position - rightmost.right_end() <= tolerance)
+    wall_position = rightmost.right_end();
+}
+
+void OutputParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Output");
+  prm.declare_entry("directory",
+                    "output",
+                    Patterns::DirectoryName(),
+                    "Directory for all results of the run (created if missing; relative paths "
+                    "are relative to the working directory).");
+  prm.declare_entry("profile times",
+                    "",
+                    Patterns::List(Patterns::Double(0.)),
+                    "Comma-separated times [time] at which profile_t<time>.csv (body, x, u, v, a "
+                    "of every node) is written, at the time step closest to each.");
+  prm.declare_entry("vtu interval",
+                    "10",
+                    Patterns::Integer(0),
+                    "Write VTU fields (with a PVD record) every this many steps [-]; 0 = never.");
+  prm.declare_entry("checkpoint interval",
+                    "0",
+                    Patterns::Integer(),
+                    "Write checkpoint.bin (the whole state: u, v, a, multipliers, active set, step "
+                    "size, time, history) every this many steps [-], 0..1e8; 0 = only when the run "
+                    "is interrupted (SIGINT or SIGTERM finish the current step, write a checkpoint "
+                    "and stop). `dyncontact FILE.prm --resume DIR` continues from it; the history "
+                    "equals that of an uninterrupted run.");
+  prm.declare_entry("write exact solution",
+                    "true",
+                    Patterns::Bool(),
+                    "Write the independent reference solution at every step beside history.csv: "
+                    "exact.csv (bars, exact 1D waves) or hertz.csv (Hertz's theory, for two "
+                    "identical spheres approaching along the axis).");
+  prm.leave_subsection();
+}
+
+void OutputParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Output");
+  directory = prm.get("directory");
+  if (directory.empty())
+    throw InputError("Output/directory is empty; give a directory name.");
+  profile_times.clear();
+  for (const auto& time : Utilities::split_string_list(prm.get("profile times")))
+    profile_times.push_back(Utilities::string_to_double(time));
+  vtu_interval = prm.get_integer("vtu interval");
+  checkpoint_interval =
+      static_cast<unsigned int>(get_in_range(prm, "checkpoint interval", "Output", 0., 1e8));
+  write_exact_solution = prm.get_bool("write exact solution");
+  prm.leave_subsection();
+}
+
+ParameterReader::ParameterReader(const std::string& filename,
+                                 const std::vector<std::string>& overrides)
+    : input_filename(filename), overrides(overrides)
+{
+  if (!std::filesystem::exists(filename))
+    throw InputError("cannot read parameter file '" + filename + "': no such file.");
+  if (std::filesystem::is_directory(filename))
+    throw InputError("cannot read parameter file '" + filename + "': it is a directory.");
+  std::ifstream input(filename);
+  if (!input)
+    throw InputError("cannot read parameter file '" + filename +
+                     "': permission denied or unreadable.");
+  std::stringstream buffer;
+  buffer << input.rdbuf();
+  input_text = buffer.str();
+
+  // First pass: the kind of problem and the number of bodies decide what the second declares.
+  ProblemSize size;
+  {
+    ParameterHandler size_prm;
+    ProblemParameters::declare_parameters(size_prm);
+    size_prm.enter_subsection("Geometry");
+    size_prm.declare_entry("number of bars", "1", Patterns::Integer(1, 100));
+    size_prm.leave_subsection();
+    size_prm.enter_subsection("Bodies");
+    size_prm.declare_entry("number of bodies", "1", Patterns::Integer(1, 100));
+    size_prm.leave_subsection();
+    parse_file(size_prm, filename, true);
+    for (const auto& text : overrides)
+      apply_override(size_prm, text, true);
+    ProblemParameters problem;
+    problem.parse_parameters(size_prm);
+    size.geometry = problem.geometry;
+    size_prm.enter_subsection("Geometry");
+    size.n_bars = size_prm.get_integer("number of bars");
+    size_prm.leave_subsection();
+    size_prm.enter_subsection("Bodies");
+    size.n_bodies = size_prm.get_integer("number of bodies");
+    size_prm.leave_subsection();
+  }
+
+  declare_all(prm, size);
+  parse_file(prm, filename, false);
+  for (const auto& text : overrides)
+    apply_override(prm, text, false);
+
+  try
+  {
+    const std::set<std::string> missing = prm.get_entries_wrongly_not_set();
+    if (!missing.empty())
+    {
+      std::string names;
+      for (const auto& path : missing)
+        names += (names.empty() ? "" : ", ") + demangle_entry_path(path);
+      throw InputError("parameter file '" + filename + "': " + names +
+                       (missing.size() > 1 ? " are" : " is") +
+                       " not set; every entry of every bar and body must be given.");
+    }
+    run_parameters.problem.parse_parameters(prm);
+    run_parameters.time.parse_parameters(prm);
+    run_parameters.contact.parse_parameters(prm);
+    run_parameters.newton.parse_parameters(prm);
+    run_parameters.guards.parse_parameters(prm);
+    if (size.geometry == GeometryKind::bars)
+      run_parameters.geometry.parse_parameters(prm);
+    else
+    {
+      run_parameters.mesh.parse_parameters(prm,
+                                           std::filesystem::path(filename).parent_path().string());
+      run_parameters.bodies.parse_parameters(prm);
+    }
+    run_parameters.output.parse_parameters(prm);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    throw InputError("parameter file '" + filename + "': " + exception_text(exception));
+  }
+  check_consistency();
+}
+
+void ParameterReader::check_consistency() const
+{
+  const RunParameters& p = run_parameters;
+  if (p.contact.formulation == ContactFormulation::penalty &&
+      p.time.scheme == NewmarkScheme::modified)
+    throw InputError(
+        "Contact/formulation = penalty cannot be combined with Time integration/scheme = modified: "
+        "the rate correction assumes exactly closed pairs; a penalized pair stays penetrated and "
+        "the correction glues it (the bars of case 6.2 never separate). Use the classical scheme "
+        "with a penalty, or Lagrange multipliers with the modified scheme.");
+}
+
+void ParameterReader::write_records(const std::string& directory) const
+{
+  std::ofstream original(directory + "/original.prm");
+  original << input_text;
+  if (!overrides.empty())
+  {
+    original << "\n# Overrides given on the command line, applied in this order:\n";
+    for (const auto& text : overrides)
+      original << "#   --set \"" << text << "\"\n";
+  }
+  std::ofstream effective(directory + "/parameters.prm");
+  prm.print_parameters(effective, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+  if (!original || !effective)
+    throw InputError("Output/directory = '" + directory + "': cannot write the parameter records.");
+}
+
+void ParameterReader::print_documentation(std::ostream& out)
+{
+  ParameterHandler prm;
+  declare_all(prm, std::nullopt);
+  prm.print_parameters(out, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
+}
+} // namespace dyncontact

@@ -1,0 +1,346 @@
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact/node_to_node_contact.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyncontact
+{
+template <int dim>
+ContactConstraints<dim>::ContactConstraints(std::vector<ContactPair<dim>> pairs,
+                                            const ContactFormulation formulation)
+    : pairs(std::move(pairs)), formulation(formulation), active(this->pairs.size(), false),
+      multiplier_values(this->pairs.size())
+{
+}
+
+template <int dim>
+ContactConstraints<dim>::ContactConstraints(const NodeToNodeContact<dim>& surfaces,
+                                            const ContactFormulation formulation)
+    : ContactConstraints(surfaces.pairs(), formulation)
+{
+  this->surfaces = &surfaces;
+}
+
+template <int dim>
+void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement)
+{
+  if (surfaces == nullptr)
+    return;
+  const auto normals = surfaces->current_normals(displacement);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    pairs[k].normal = normals[k];
+}
+
+template <int dim>
+void ContactConstraints<dim>::scale_penalty_stiffness(const double factor)
+{
+  for (auto& pair : pairs)
+    pair.penalty_stiffness *= factor;
+}
+
+template <int dim>
+unsigned int ContactConstraints<dim>::n_active() const
+{
+  return std::count(active.begin(), active.end(), true);
+}
+
+template <int dim>
+double ContactConstraints<dim>::normal_component(const Node<dim>& node,
+                                                 const Tensor<1, dim>& normal,
+                                                 const Vector<double>& field) const
+{
+  double component = 0.;
+  for (unsigned int d = 0; d < dim; ++d)
+    component += normal[d] * field[node.dofs[d]];
+  return component;
+}
+
+template <int dim>
+double ContactConstraints<dim>::normal_balance(const Node<dim>& node,
+                                               const Tensor<1, dim>& normal,
+                                               const Vector<double>& lumped_mass,
+                                               const Vector<double>& acceleration,
+                                               const Vector<double>& net_internal_force) const
+{
+  double balance = 0.;
+  for (unsigned int d = 0; d < dim; ++d)
+    balance += normal[d] * (lumped_mass[node.dofs[d]] * acceleration[node.dofs[d]] +
+                            net_internal_force[node.dofs[d]]);
+  return balance;
+}
+
+template <int dim>
+double ContactConstraints<dim>::gap(const unsigned int pair_index,
+                                    const Vector<double>& displacement) const
+{
+  // Reference gap plus relative displacement, never absolute positions: translating a problem
+  // must not cost digits.
+  const ContactPair<dim>& pair = pairs[pair_index];
+  const double u_b =
+      pair.against_wall() ? 0. : normal_component(*pair.node_b, pair.normal, displacement);
+  return pair.reference_gap() + u_b - normal_component(pair.node_a, pair.normal, displacement);
+}
+
+template <int dim>
+void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern& sparsity,
+                                              const types::global_dof_index n_dofs) const
+{
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    const types::global_dof_index row = n_dofs + k;
+    sparsity.add(row, row);
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      sparsity.add(row, pairs[k].node_a.dofs[d]);
+      sparsity.add(pairs[k].node_a.dofs[d], row);
+      if (!pairs[k].against_wall())
+      {
+        sparsity.add(row, pairs[k].node_b->dofs[d]);
+        sparsity.add(pairs[k].node_b->dofs[d], row);
+      }
+    }
+  }
+}
+
+template <int dim>
+void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
+{
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      // G^T lambda with G = dg/du: -n on body A, +n on body B.
+      force[pairs[k].node_a.dofs[d]] -= pairs[k].normal[d] * multiplier_values[k];
+      if (!pairs[k].against_wall())
+        force[pairs[k].node_b->dofs[d]] += pairs[k].normal[d] * multiplier_values[k];
+    }
+}
+
+template <int dim>
+void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& displacement,
+                                                       const double inactive_diagonal,
+                                                       TrilinosWrappers::SparseMatrix* matrix,
+                                                       Vector<double>& constraint_residual) const
+{
+  const types::global_dof_index n_dofs = displacement.size();
+  const auto add                       = [matrix](const types::global_dof_index row,
+                            const types::global_dof_index column,
+                            const double value)
+  {
+    if (matrix != nullptr)
+      matrix->add(row, column, value);
+  };
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    const types::global_dof_index row = n_dofs + k;
+    if (!active[k])
+    {
+      add(row, row, inactive_diagonal);
+      constraint_residual[k] = inactive_diagonal * multiplier_values[k];
+      continue;
+    }
+    // Rows of the symmetric system [K_eff, -G^T; -G, -D]: -G = +n on body A, -n on body B.
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      const double n_d = pairs[k].normal[d];
+      add(row, pairs[k].node_a.dofs[d], n_d);
+      add(pairs[k].node_a.dofs[d], row, n_d);
+      if (!pairs[k].against_wall())
+      {
+        add(row, pairs[k].node_b->dofs[d], -n_d);
+        add(pairs[k].node_b->dofs[d], row, -n_d);
+      }
+    }
+    constraint_residual[k] = -gap(k, displacement);
+    if (formulation == ContactFormulation::penalty)
+    {
+      add(row, row, -1. / pairs[k].penalty_stiffness);
+      constraint_residual[k] -= multiplier_values[k] / pairs[k].penalty_stiffness;
+    }
+  }
+}
+
+template <int dim>
+void ContactConstraints<dim>::add_multiplier_increment(const Vector<double>& increment)
+{
+  multiplier_values += increment;
+}
+
+template <int dim>
+bool ContactConstraints<dim>::update_active_set(const Vector<double>& displacement,
+                                                const double gap_tolerance,
+                                                const double force_tolerance)
+{
+  bool changed = false;
+  std::vector<unsigned int> tensile_pairs;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (!active[k] && gap(k, displacement) < -gap_tolerance)
+    {
+      active[k] = true;
+      changed   = true;
+    }
+    else if (active[k] && multiplier_values[k] < -force_tolerance)
+      tensile_pairs.push_back(k);
+  // On a surface, a tensile nodal force inside compressed surroundings (the zero-area axis node of
+  // an axisymmetric Q2 surface) is not a tensile traction: such a pair stays closed. Not so for a
+  // penalty, whose tensile force means an open gap: keeping that pair would glue it.
+  const bool check_pressure =
+      !tensile_pairs.empty() && formulation == ContactFormulation::lagrange_multiplier;
+  const std::vector<double> pressures =
+      check_pressure ? contact_pressures(displacement) : std::vector<double>();
+  for (const unsigned int k : tensile_pairs)
+    if (pressures.empty() || !(pressures[k] > 0.)) // a zero or undefined pressure releases too
+    {
+      active[k]            = false;
+      multiplier_values[k] = 0.;
+      changed              = true;
+    }
+  return changed;
+}
+
+template <int dim>
+void ContactConstraints<dim>::apply_rate_correction(const Newmark& newmark,
+                                                    const Vector<double>& lumped_mass,
+                                                    const NewmarkStep& step,
+                                                    Vector<double>& v_new,
+                                                    Vector<double>& a_new) const
+{
+  const double dt    = newmark.time_step();
+  const double beta  = newmark.beta();
+  const double gamma = newmark.gamma();
+
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    if (!active[k])
+      continue;
+    const ContactPair<dim>& pair = pairs[k];
+    const Tensor<1, dim>& normal = pair.normal;
+    // [[f]] = (f_B - f_A) . n; a wall is at rest, so only its position enters.
+    const auto jump = [&](const Vector<double>& field)
+    {
+      const double side_b =
+          pair.against_wall() ? 0. : normal_component(*pair.node_b, normal, field);
+      return side_b - normal_component(pair.node_a, normal, field);
+    };
+    // Eq. (21) holds for a pair closed at t_{n+1}, where its numerator's [[X + u_n]] equals
+    // g_n - g_{n+1}; the latter keeps [[a_{n+1}]] = 0 exact even for the residual gap Newton leaves
+    // within its tolerance (the literal form would leave [[a_{n+1}]] = g_{n+1} / (beta dt^2)).
+    const double position_jump = gap(k, step.old_displacement) - gap(k, step.new_displacement);
+    const double mass_a        = lumped_mass[pair.node_a.dofs[0]];
+    const double inverse_weight_sum =
+        1. / mass_a + (pair.against_wall() ? 0. : 1. / lumped_mass[pair.node_b->dofs[0]]);
+
+    // Eqs. (21) and (22).
+    const Vector<double>& v_old = step.old_velocity;
+    const Vector<double>& a_old = step.old_acceleration;
+    const double lambda_a =
+        (position_jump + dt * jump(v_old) + dt * dt * (0.5 - beta) * jump(a_old)) /
+        inverse_weight_sum;
+    const double lambda_v = (jump(v_old) + dt * (1. - gamma) * jump(a_old)) / inverse_weight_sum;
+
+    // Recovery of the normal rates of side a = 1 (A, sign -1) and a = 2 (B, sign +1).
+    const auto correct_side = [&](const Node<dim>& node, const double sign)
+    {
+      // [u_{n+1} - u_n - dt v_n - dt^2 (1/2 - beta) a_n] . n is the increment over the predictor.
+      const double mass = lumped_mass[node.dofs[0]];
+      const double a_normal =
+          (normal_component(node, normal, step.increment) + sign * lambda_a / mass) *
+          newmark.inertia_factor();
+      const double v_normal = normal_component(node, normal, v_old) +
+                              dt * (1. - gamma) * normal_component(node, normal, a_old) +
+                              dt * gamma * a_normal - sign * lambda_v / mass;
+      const double a_shift = a_normal - normal_component(node, normal, a_new);
+      const double v_shift = v_normal - normal_component(node, normal, v_new);
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        a_new[node.dofs[d]] += a_shift * normal[d];
+        v_new[node.dofs[d]] += v_shift * normal[d];
+      }
+    };
+    correct_side(pair.node_a, -1.);
+    if (!pair.against_wall())
+      correct_side(*pair.node_b, +1.);
+  }
+}
+
+template <int dim>
+double
+ContactConstraints<dim>::recovered_contact_force(const Vector<double>& lumped_mass,
+                                                 const Vector<double>& acceleration,
+                                                 const Vector<double>& net_internal_force) const
+{
+  double force = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      force -= normal_balance(
+          pairs[k].node_a, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
+  return force;
+}
+
+template <int dim>
+typename ContactConstraints<dim>::SideForces
+ContactConstraints<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
+                                               const Vector<double>& acceleration,
+                                               const Vector<double>& net_internal_force) const
+{
+  SideForces forces{0., 0.};
+  for (const bool side_b : {false, true})
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      if (active[k] && !pairs[k].against_wall())
+      {
+        const double balance = normal_balance(side_b ? *pairs[k].node_b : pairs[k].node_a,
+                                              pairs[k].normal,
+                                              lumped_mass,
+                                              acceleration,
+                                              net_internal_force);
+        (side_b ? forces.on_b : forces.on_a) += side_b ? balance : -balance;
+      }
+  return forces;
+}
+
+template <int dim>
+double ContactConstraints<dim>::max_penetration(const Vector<double>& displacement) const
+{
+  double penetration = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    penetration = std::max(penetration, -gap(k, displacement));
+  return penetration;
+}
+
+template <int dim>
+double ContactConstraints<dim>::contact_radius(const Vector<double>& displacement) const
+{
+  double radius = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      radius =
+          std::max(radius, distance_from_axis(current_position(pairs[k].node_a, displacement)));
+  return radius;
+}
+
+template <int dim>
+std::vector<double>
+ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) const
+{
+  if (surfaces == nullptr)
+    return {};
+  std::vector<double> active_multipliers(pairs.size(), 0.);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      active_multipliers[k] = multiplier_values[k];
+  return surfaces->contact_pressures(displacement, active_multipliers);
+}
+
+template <int dim>
+double ContactConstraints<dim>::total_multiplier() const
+{
+  double total = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      total += multiplier_values[k];
+  return total;
+}
+
+template class ContactConstraints<1>;
+template class ContactConstraints<2>;
+} // namespace dyncontact

@@ -1,0 +1,140 @@
+#include <dyncontact/contact/contact_surface.h>
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q_eulerian.h>
+
+#include <algorithm>
+#include <map>
+
+namespace dyncontact
+{
+template <int dim>
+ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
+                                    const Kinematics<dim>& kinematics,
+                                    const NodeIndex<dim>& nodes,
+                                    const types::boundary_id boundary)
+    : dof_handler(dof_handler), kinematics(kinematics), boundary(boundary)
+{
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+  std::vector<types::global_dof_index> first_dofs;
+  for (const auto& cell : dof_handler.active_cell_iterators())
+    for (const unsigned int face : cell->face_indices())
+      if (cell->face(face)->at_boundary() && cell->face(face)->boundary_id() == boundary)
+      {
+        faces.emplace_back(cell, face);
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          if (fe.system_to_component_index(i).first == 0 && fe.has_support_on_face(i, face))
+            first_dofs.push_back(cell_dofs[i]);
+      }
+  if (faces.empty())
+    throw InputError("the mesh has no boundary faces with id " + std::to_string(boundary) +
+                     ", so this contact surface is empty.");
+  std::sort(first_dofs.begin(), first_dofs.end());
+  first_dofs.erase(std::unique(first_dofs.begin(), first_dofs.end()), first_dofs.end());
+  std::map<types::global_dof_index, unsigned int> node_of_first_dof; // index in surface_nodes
+  for (const auto& node : nodes.nodes())
+    if (std::binary_search(first_dofs.begin(), first_dofs.end(), node.dofs[0]))
+    {
+      node_of_first_dof.emplace(node.dofs[0], surface_nodes.size());
+      surface_nodes.push_back(node);
+    }
+  for (const auto& [cell, face] : faces)
+  {
+    cell->get_dof_indices(cell_dofs);
+    nodes_of_face.emplace_back();
+    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+      if (fe.system_to_component_index(i).first == 0 && fe.has_support_on_face(i, face))
+        nodes_of_face.back().emplace_back(i, node_of_first_dof.at(cell_dofs[i]));
+  }
+}
+
+template <int dim>
+template <typename Integrand>
+void ContactSurface<dim>::integrate_over_faces(const Mapping<dim>& mapping,
+                                               const Integrand& integrand) const
+{
+  // Exact for a product of two shape functions times a linear measure factor on a straight face.
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  FEFaceValues<dim> at_gauss_points(mapping,
+                                    fe,
+                                    QGauss<dim - 1>(fe.degree + 2),
+                                    update_values | update_quadrature_points | update_JxW_values);
+  for (unsigned int f = 0; f < faces.size(); ++f)
+  {
+    const auto& [cell, face] = faces[f];
+    at_gauss_points.reinit(cell, face);
+    for (unsigned int q = 0; q < at_gauss_points.n_quadrature_points; ++q)
+      integrand(
+          nodes_of_face[f],
+          at_gauss_points,
+          q,
+          kinematics.measure_factor(at_gauss_points.quadrature_point(q), cell->material_id()) *
+              at_gauss_points.JxW(q));
+  }
+}
+
+template <int dim>
+std::vector<Tensor<1, dim>> ContactSurface<dim>::normals(const Vector<double>& displacement) const
+{
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  const MappingQEulerian<dim, Vector<double>> current_mapping(fe.degree, dof_handler, displacement);
+  // A face quadrature whose points are the face's support points; the node at point q is the one
+  // whose (Lagrange) shape function is one there.
+  const Quadrature<dim - 1> node_points(fe.base_element(0).get_unit_face_support_points());
+  FEFaceValues<dim> at_nodes(
+      current_mapping, fe, node_points, update_values | update_normal_vectors);
+  std::vector<Tensor<1, dim>> nodal_normals(surface_nodes.size());
+  for (unsigned int f = 0; f < faces.size(); ++f)
+  {
+    at_nodes.reinit(faces[f].first, faces[f].second);
+    for (unsigned int q = 0; q < node_points.size(); ++q)
+      for (const auto& [local_dof, node] : nodes_of_face[f])
+        if (at_nodes.shape_value_component(local_dof, q, 0) > 0.5)
+          nodal_normals[node] += at_nodes.normal_vector(q);
+  }
+  for (auto& normal : nodal_normals)
+    normal /= normal.norm();
+  return nodal_normals;
+}
+
+template <int dim>
+std::vector<double> ContactSurface<dim>::lumped_areas(const Vector<double>& displacement) const
+{
+  const Eigen::MatrixXd mass = mass_matrix(displacement);
+  // The shape functions sum to one, so the row sums of the mass matrix are the consistent nodal
+  // areas, and their sum is the surface's area.
+  const double scale = mass.sum() / mass.diagonal().sum();
+  std::vector<double> areas(surface_nodes.size());
+  for (unsigned int node = 0; node < areas.size(); ++node)
+    areas[node] = scale * mass(node, node);
+  return areas;
+}
+
+template <int dim>
+Eigen::MatrixXd ContactSurface<dim>::mass_matrix(const Vector<double>& displacement) const
+{
+  const MappingQEulerian<dim, Vector<double>> current_mapping(
+      dof_handler.get_fe().degree, dof_handler, displacement);
+  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(surface_nodes.size(), surface_nodes.size());
+  integrate_over_faces(current_mapping,
+                       [&mass](const auto& face_nodes,
+                               const FEFaceValues<dim>& values,
+                               const unsigned int q,
+                               const double measure)
+                       {
+                         for (const auto& [dof_i, node_i] : face_nodes)
+                           for (const auto& [dof_j, node_j] : face_nodes)
+                             mass(node_i, node_j) += values.shape_value_component(dof_i, q, 0) *
+                                                     values.shape_value_component(dof_j, q, 0) *
+                                                     measure;
+                       });
+  return mass;
+}
+
+template class ContactSurface<1>;
+template class ContactSurface<2>;
+template class ContactSurface<3>;
+} // namespace dyncontact

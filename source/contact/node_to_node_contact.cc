@@ -1,0 +1,145 @@
+#include <dyncontact/contact/node_to_node_contact.h>
+
+#include <limits>
+#include <sstream>
+
+namespace dyncontact
+{
+namespace
+{
+template <int dim>
+Point<dim> centroid(const std::vector<Node<dim>>& nodes)
+{
+  Point<dim> sum;
+  for (const auto& node : nodes)
+    sum += node.position;
+  return sum / static_cast<double>(nodes.size());
+}
+} // namespace
+
+template <int dim>
+NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
+                                          ContactSurface<dim> surface_b,
+                                          const double penalty_stiffness_per_area,
+                                          const double matching_tolerance,
+                                          const double touching_tolerance)
+    : surface_a(std::move(surface_a)), surface_b(std::move(surface_b))
+{
+  const std::vector<Node<dim>>& nodes_a = this->surface_a.nodes();
+  const std::vector<Node<dim>>& nodes_b = this->surface_b.nodes();
+  Tensor<1, dim> approach               = centroid(nodes_b) - centroid(nodes_a);
+  approach /= approach.norm();
+  const Vector<double> undeformed(this->surface_a.n_dofs());
+  const auto normals_a     = this->surface_a.normals(undeformed);
+  const auto normals_b     = this->surface_b.normals(undeformed);
+  const auto areas_a       = this->surface_a.lumped_areas(undeformed);
+  const auto areas_b       = this->surface_b.lumped_areas(undeformed);
+  const auto across_offset = [&approach](const Tensor<1, dim>& offset)
+  { return (offset - (offset * approach) * approach).norm(); };
+
+  unsigned int unmatched = 0;
+  std::ostringstream first_unmatched;
+  for (unsigned int i = 0; i < nodes_a.size(); ++i)
+  {
+    if (normals_a[i] * approach < 0.5)
+      continue;
+    unsigned int partner = nodes_b.size();
+    double offset        = std::numeric_limits<double>::max();
+    for (unsigned int j = 0; j < nodes_b.size(); ++j)
+      if (normals_b[j] * approach <= -0.5 &&
+          across_offset(nodes_b[j].position - nodes_a[i].position) < offset)
+      {
+        partner = j;
+        offset  = across_offset(nodes_b[j].position - nodes_a[i].position);
+      }
+    if (offset > matching_tolerance)
+    {
+      if (unmatched++ == 0)
+        first_unmatched << nodes_a[i].position;
+      continue;
+    }
+    ContactPair<dim> pair;
+    pair.node_a = nodes_a[i];
+    pair.node_b = nodes_b[partner];
+    if (nodes_b[partner].position.distance(nodes_a[i].position) <= touching_tolerance)
+      pair.node_b->position = nodes_a[i].position;
+    pair.penalty_stiffness = penalty_stiffness_per_area * 0.5 * (areas_a[i] + areas_b[partner]);
+    candidate_pairs.push_back(pair);
+    surface_nodes_of_pair.emplace_back(i, partner);
+  }
+  const auto reference_normals = current_normals(undeformed);
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
+    candidate_pairs[k].normal = reference_normals[k];
+  if (unmatched == 0)
+    for (const ContactPair<dim>& pair : candidate_pairs)
+      if (pair.reference_gap() < -touching_tolerance)
+      {
+        std::ostringstream where;
+        where << pair.node_a.position;
+        throw InputError("body " + std::to_string(pair.node_a.body + 1) + " and body " +
+                         std::to_string(pair.node_b->body + 1) + " overlap at t = 0: the node " +
+                         where.str() + " of body " + std::to_string(pair.node_a.body + 1) +
+                         " lies " + format_number(-pair.reference_gap()) + " inside body " +
+                         std::to_string(pair.node_b->body + 1) + " (bodies may touch, to " +
+                         format_number(touching_tolerance) + ", but not overlap).");
+      }
+  if (unmatched > 0)
+    throw InputError(std::to_string(unmatched) + " of the " +
+                     std::to_string(unmatched + candidate_pairs.size()) +
+                     " surface nodes of body " + std::to_string(nodes_a.front().body + 1) +
+                     " that face body " + std::to_string(nodes_b.front().body + 1) +
+                     " have no node of body " + std::to_string(nodes_b.front().body + 1) +
+                     " across from them (first at " + first_unmatched.str() +
+                     "): node-to-node contact needs matching (e.g. mirrored) meshes of the facing "
+                     "surfaces.");
+}
+
+template <int dim>
+std::vector<Tensor<1, dim>>
+NodeToNodeContact<dim>::current_normals(const Vector<double>& displacement) const
+{
+  const auto normals_a = surface_a.normals(displacement);
+  const auto normals_b = surface_b.normals(displacement);
+  std::vector<Tensor<1, dim>> pair_normals;
+  for (const auto& [index_a, index_b] : surface_nodes_of_pair)
+  {
+    const Tensor<1, dim> normal = normals_a[index_a] - normals_b[index_b];
+    pair_normals.push_back(normal / normal.norm());
+  }
+  return pair_normals;
+}
+
+template <int dim>
+std::vector<double>
+NodeToNodeContact<dim>::contact_pressures(const Vector<double>& displacement,
+                                          const std::vector<double>& multipliers) const
+{
+  AssertDimension(multipliers.size(), candidate_pairs.size());
+  std::vector<unsigned int> zone; // pairs whose node A carries the pressure field
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
+    if (multipliers[k] != 0.)
+      zone.push_back(k);
+  std::vector<double> pressures(candidate_pairs.size(), 0.);
+  if (zone.empty())
+    return pressures;
+
+  const Eigen::MatrixXd mass = surface_a.mass_matrix(displacement);
+  Eigen::MatrixXd zone_mass(zone.size(), zone.size());
+  Eigen::VectorXd zone_forces(zone.size());
+  for (unsigned int i = 0; i < zone.size(); ++i)
+  {
+    zone_forces(i) = multipliers[zone[i]];
+    for (unsigned int j = 0; j < zone.size(); ++j)
+      zone_mass(i, j) =
+          mass(surface_nodes_of_pair[zone[i]].first, surface_nodes_of_pair[zone[j]].first);
+  }
+  const Eigen::VectorXd zone_pressures = zone_mass.ldlt().solve(zone_forces);
+  for (unsigned int i = 0; i < zone.size(); ++i)
+    pressures[zone[i]] = zone_pressures(i);
+  return pressures;
+}
+
+template class NodeToNodeContact<1>;
+template class NodeToNodeContact<2>;
+template class NodeToNodeContact<3>;
+} // namespace dyncontact

@@ -1,0 +1,219 @@
+#include <dyncontact/models/bar_model.h>
+#include <dyncontact/postprocess/history.h>
+
+#include <algorithm>
+#include <numeric>
+
+namespace dyncontact
+{
+namespace
+{
+/** Penalty stiffness eps = factor * E A / h of a bar (its axial stiffness per element). */
+double element_stiffness(const BarParameters& bar)
+{
+  return bar.youngs_modulus * bar.area / bar.element_length();
+}
+} // namespace
+
+BarModel::BarModel(const GeometryParameters& geometry, const ContactParameters& contact)
+    : geometry(geometry), contact(contact)
+{
+}
+
+std::vector<unsigned int> BarModel::bars_in_x_order() const
+{
+  std::vector<unsigned int> order(geometry.bars.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(),
+            order.end(),
+            [this](const unsigned int a, const unsigned int b)
+            { return geometry.bars[a].left_end < geometry.bars[b].left_end; });
+  return order;
+}
+
+void BarModel::create_triangulation(Triangulation<1>& triangulation)
+{
+  std::vector<Point<1>> vertices;
+  std::vector<CellData<1>> cells;
+  for (unsigned int b = 0; b < geometry.bars.size(); ++b)
+  {
+    const BarParameters& bar        = geometry.bars[b];
+    const unsigned int first_vertex = vertices.size();
+    // The ends exactly at left_end and right_end(), where the parameters put touching bodies.
+    for (unsigned int i = 0; i < bar.n_elements; ++i)
+      vertices.emplace_back(bar.left_end + bar.length * i / bar.n_elements);
+    vertices.emplace_back(bar.right_end());
+    for (unsigned int e = 0; e < bar.n_elements; ++e)
+    {
+      CellData<1> cell;
+      cell.vertices    = {first_vertex + e, first_vertex + e + 1};
+      cell.material_id = b;
+      cells.push_back(cell);
+    }
+  }
+  triangulation.create_triangulation(vertices, cells, SubCellData());
+}
+
+std::vector<BodyMaterial> BarModel::body_materials() const
+{
+  std::vector<BodyMaterial> materials;
+  for (const auto& bar : geometry.bars)
+    materials.push_back(
+        {std::make_shared<LinearElasticMaterial>(bar.youngs_modulus, 0.), bar.density});
+  return materials;
+}
+
+std::unique_ptr<Kinematics<1>> BarModel::create_kinematics() const
+{
+  std::vector<double> areas;
+  for (const auto& bar : geometry.bars)
+    areas.push_back(bar.area);
+  return std::make_unique<BarKinematics>(areas);
+}
+
+Tensor<1, 1> BarModel::initial_velocity(const types::material_id body, const Point<1>&) const
+{
+  Tensor<1, 1> velocity;
+  velocity[0] = geometry.bars[body].initial_velocity;
+  return velocity;
+}
+
+std::vector<ContactPair<1>> BarModel::contact_pairs(const NodeIndex<1>& nodes) const
+{
+  Tensor<1, 1> plus_x;
+  plus_x[0]                             = 1.;
+  const std::vector<unsigned int> order = bars_in_x_order();
+  std::vector<ContactPair<1>> pairs;
+  for (unsigned int i = 0; i + 1 < order.size(); ++i)
+  {
+    const BarParameters& left  = geometry.bars[order[i]];
+    const BarParameters& right = geometry.bars[order[i + 1]];
+    ContactPair<1> pair;
+    pair.node_a = nodes.closest_node(order[i], Point<1>(left.right_end()));
+    pair.node_b = nodes.closest_node(order[i + 1], Point<1>(right.left_end));
+    pair.normal = plus_x;
+    pair.penalty_stiffness =
+        contact.penalty_factor * std::max(element_stiffness(left), element_stiffness(right));
+    pairs.push_back(pair);
+  }
+  if (geometry.wall_enabled)
+  {
+    const BarParameters& rightmost = geometry.bars[order.back()];
+    ContactPair<1> pair;
+    pair.node_a            = nodes.closest_node(order.back(), Point<1>(rightmost.right_end()));
+    pair.wall_point        = Point<1>(geometry.wall_position);
+    pair.normal            = plus_x;
+    pair.penalty_stiffness = contact.penalty_factor * element_stiffness(rightmost);
+    pairs.push_back(pair);
+  }
+  return pairs;
+}
+
+std::vector<Node<1>> BarModel::monitor_nodes(const NodeIndex<1>& nodes) const
+{
+  const std::vector<ContactPair<1>> pairs = contact_pairs(nodes);
+  std::vector<Node<1>> monitors;
+  for (unsigned int b = 0; b < geometry.bars.size(); ++b)
+  {
+    // Its node in the first candidate that involves it; a bar without candidates: its right end.
+    std::optional<Node<1>> tip;
+    for (const auto& pair : pairs)
+    {
+      if (!tip && pair.node_a.body == b)
+        tip = pair.node_a;
+      if (!tip && pair.node_b && pair.node_b->body == b)
+        tip = *pair.node_b;
+    }
+    monitors.push_back(tip ? *tip : nodes.closest_node(b, Point<1>(geometry.bars[b].right_end())));
+  }
+  return monitors;
+}
+
+Tensor<1, 1> BarModel::impact_direction() const
+{
+  Tensor<1, 1> plus_x;
+  plus_x[0] = 1.;
+  return plus_x;
+}
+
+void BarModel::write_reference(const std::string& directory,
+                               const std::vector<double>& times,
+                               const std::vector<Node<1>>& monitors) const
+{
+  const ExactBarSolution exact = exact_solution(times.back());
+  const unsigned int n_bars    = geometry.bars.size();
+
+  std::vector<std::string> columns = {"time",
+                                      "contact_force",
+                                      "active_constraints",
+                                      "kinetic_energy",
+                                      "strain_energy",
+                                      "total_energy"};
+  for (unsigned int b = 1; b <= n_bars; ++b)
+    for (const std::string quantity : {"momentum_", "u_tip_", "v_tip_", "a_tip_"})
+      columns.push_back(quantity + std::to_string(b));
+  History table(columns);
+  table.attach_file(directory + "/exact.csv");
+  for (const double t : times)
+  {
+    double force = 0., contacts = 0., kinetic = 0., strain = 0.;
+    for (unsigned int i = 0; i < exact.n_interfaces(); ++i)
+    {
+      force += exact.contact_force(i, t);
+      contacts += exact.in_contact(i, t) ? 1. : 0.;
+    }
+    for (unsigned int b = 0; b < n_bars; ++b)
+    {
+      kinetic += exact.kinetic_energy(b, t);
+      strain += exact.strain_energy(b, t);
+    }
+    std::vector<double> row = {t, force, contacts, kinetic, strain, kinetic + strain};
+    for (unsigned int b = 0; b < n_bars; ++b)
+    {
+      const double X = monitors[b].position[0];
+      // The exact acceleration is zero between wave arrivals (impulses are not represented).
+      row.insert(row.end(),
+                 {exact.momentum(b, t), exact.displacement(b, X, t), exact.velocity(b, X, t), 0.});
+    }
+    table.add_row(row);
+  }
+}
+
+double BarModel::highest_frequency() const
+{
+  double frequency = 0.;
+  for (const auto& bar : geometry.bars)
+    frequency = std::max(frequency, 2. * bar.wave_speed() / bar.element_length());
+  return frequency;
+}
+
+ExactBarSolution BarModel::exact_solution(const double end_time) const
+{
+  std::vector<ExactBar> bars;
+  for (const auto& bar : geometry.bars)
+    bars.push_back({bar.left_end,
+                    bar.length,
+                    bar.youngs_modulus,
+                    bar.density,
+                    bar.area,
+                    bar.initial_velocity});
+  return ExactBarSolution(bars,
+                          geometry.wall_enabled ? std::optional<double>(geometry.wall_position)
+                                                : std::nullopt,
+                          end_time);
+}
+
+void BarModel::print_summary(std::ostream& out, const double time_step) const
+{
+  for (unsigned int b = 0; b < geometry.bars.size(); ++b)
+  {
+    const BarParameters& bar = geometry.bars[b];
+    out << "  body " << b + 1 << ": bar [" << bar.left_end << ", " << bar.right_end() << "], "
+        << bar.n_elements << " elements, c = " << bar.wave_speed()
+        << ", Courant number c dt / h = " << bar.wave_speed() * time_step / bar.element_length()
+        << ", v0 = " << bar.initial_velocity << "\n";
+  }
+  if (geometry.wall_enabled)
+    out << "  rigid wall at x = " << geometry.wall_position << "\n";
+}
+} // namespace dyncontact

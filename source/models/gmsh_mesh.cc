@@ -1,0 +1,502 @@
+#include <dyncontact/models/gmsh_mesh.h>
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/grid/reference_cell.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <gmsh.h>
+#include <set>
+#include <sstream>
+#include <unistd.h>
+
+namespace dyncontact
+{
+namespace
+{
+/** `text` with every run of white space (line breaks included) replaced by one blank. */
+std::string one_line(const std::string& text)
+{
+  std::istringstream words(text);
+  std::string word, line;
+  while (words >> word)
+    line += (line.empty() ? "" : " ") + word;
+  return line;
+}
+
+/** The ONELAB folder of the parameters of a .geo file (DefineConstant ... Name "Parameters/x"). */
+const std::string parameter_folder = "Parameters/";
+
+/** The start of every message about `filename`. */
+std::string about(const std::string& filename)
+{
+  return "Mesh file '" + filename + "': ";
+}
+
+/**
+ * One session of the gmsh library: initialized on construction and finalized on destruction, so
+ * the two stay balanced when an exception leaves the scope. gmsh prints nothing to the terminal;
+ * its messages are logged for logged_errors(). gmsh has global state: only one session may exist
+ * at a time, and no other code may use gmsh meanwhile.
+ */
+class GmshSession
+{
+public:
+  GmshSession()
+  {
+    gmsh::initialize(0, nullptr, /*readConfigFiles=*/false);
+    gmsh::option::setNumber("General.Terminal", 0);
+    gmsh::logger::start();
+    // The ONELAB database (the .geo parameters) outlives gmsh::finalize(): start from scratch.
+    gmsh::onelab::clear();
+  }
+
+  ~GmshSession()
+  {
+    gmsh::onelab::clear();
+    gmsh::logger::stop();
+    gmsh::finalize();
+  }
+
+  GmshSession(const GmshSession&)            = delete;
+  GmshSession& operator=(const GmshSession&) = delete;
+
+  /** gmsh's error messages so far, joined into one line ("" if there were none). */
+  std::string logged_errors() const
+  {
+    std::vector<std::string> log;
+    gmsh::logger::get(log);
+    const std::string error_prefix = "Error: ";
+    std::string errors;
+    for (const std::string& message : log)
+      if (message.compare(0, error_prefix.size(), error_prefix) == 0)
+        errors += (errors.empty() ? "" : "; ") + one_line(message.substr(error_prefix.size()));
+    return errors;
+  }
+};
+
+/**
+ * A new, empty file with a unique name in the system's temporary directory, removed when this
+ * object is destroyed. It is not opened: others write and read it by name.
+ */
+class TemporaryFile
+{
+public:
+  /** Creates the file; its name ends in `suffix` (e.g. ".msh"). */
+  explicit TemporaryFile(const std::string& suffix)
+  {
+    std::string name_template =
+        (std::filesystem::temp_directory_path() / ("dyncontact-mesh-XXXXXX" + suffix)).string();
+    const int descriptor = mkstemps(name_template.data(), static_cast<int>(suffix.size()));
+    AssertThrow(descriptor != -1,
+                ExcMessage("Cannot create a temporary file " + name_template +
+                           " for the mesh written by gmsh."));
+    close(descriptor);
+    path = name_template;
+  }
+
+  ~TemporaryFile()
+  {
+    std::error_code ignored;
+    std::filesystem::remove(path, ignored);
+  }
+
+  TemporaryFile(const TemporaryFile&)            = delete;
+  TemporaryFile& operator=(const TemporaryFile&) = delete;
+
+  /** The file's full name. */
+  const std::string& name() const { return path; }
+
+private:
+  std::string path;
+};
+
+/**
+ * Opens `file` (.geo or .msh) in the gmsh session; gmsh's complaints about it become an
+ * InputError naming the file.
+ */
+void open_file(const GmshSession& session, const std::string& file)
+{
+  const std::string failure = std::filesystem::path(file).extension() == ".msh"
+                                  ? "not a readable gmsh mesh: "
+                                  : "gmsh failed: ";
+  try
+  {
+    gmsh::open(file);
+  }
+  catch (const std::string& gmsh_error)
+  {
+    // gmsh throws its first error's text; the log holds it together with earlier ones.
+    const std::string errors = session.logged_errors();
+    throw InputError(about(file) + failure + (errors.empty() ? one_line(gmsh_error) : errors));
+  }
+  const std::string errors = session.logged_errors();
+  if (!errors.empty())
+    throw InputError(about(file) + failure + errors);
+}
+
+/** The parameters of the .geo file open in the session, sorted, without the ONELAB folder. */
+std::vector<std::string> declared_parameters()
+{
+  std::vector<std::string> names;
+  gmsh::onelab::getNames(names, parameter_folder + ".*");
+  for (std::string& name : names)
+    name = name.substr(parameter_folder.size());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+/**
+ * Checks the element types of the mesh in the session: quadrilaterals (of any order) as cells,
+ * lines and points on the boundary, nothing else; throws InputError naming `filename` and the
+ * types found otherwise. Returns whether some elements are of higher order than 1.
+ */
+bool check_element_types(const std::string& filename)
+{
+  std::vector<int> types;
+  gmsh::model::mesh::getElementTypes(types);
+  std::size_t n_cells = 0, n_other_cells = 0;
+  std::string other_types;
+  bool higher_order = false;
+  for (const int type : types)
+  {
+    std::string name;
+    int dim, order, n_nodes, n_primary_nodes;
+    std::vector<double> local_coordinates;
+    gmsh::model::mesh::getElementProperties(
+        type, name, dim, order, n_nodes, local_coordinates, n_primary_nodes);
+    std::vector<std::size_t> elements, nodes;
+    gmsh::model::mesh::getElementsByType(type, elements, nodes);
+    higher_order = higher_order || order > 1;
+    if (dim < 2)
+      continue;
+    n_cells += elements.size();
+    if (dim > 2 || name.compare(0, 13, "Quadrilateral") != 0)
+    {
+      n_other_cells += elements.size();
+      other_types +=
+          (other_types.empty() ? "" : ", ") + std::to_string(elements.size()) + " '" + name + "'";
+    }
+  }
+  if (n_other_cells > 0)
+    throw InputError(about(filename) + std::to_string(n_other_cells) + " of its " +
+                     std::to_string(n_cells) + " cells are not quadrilaterals (" + other_types +
+                     "); only quadrilaterals (4-, 8- or 9-node) are allowed (in a .geo file: "
+                     "Transfinite and Recombine Surface).");
+  return higher_order;
+}
+
+/**
+ * Prepares `mesh_file` for deal.II's reader, which takes first-order cells only, and returns the
+ * name of the file it is to read. A .geo file is meshed in 2D with gmsh, after its parameters are
+ * set, into linear quadrilaterals (recombined) and written to `msh_file` (ASCII format 4.1, the
+ * elements of the physical groups): `msh_file` is returned. A .msh file is read by gmsh to check
+ * its element types (check_element_types()); one of higher order is reduced to first order on
+ * the same vertices (the mapping curves the boundary from the manifolds) and written, whole, to
+ * `msh_file`, which is returned; a first-order one is returned as it is, for deal.II to read
+ * directly (its tags element by element, as in gmsh format 2). It does not check cells and
+ * groups; read_msh_file() and the checks after it do.
+ */
+std::string first_order_mesh(const std::string& mesh_file,
+                             const std::map<std::string, double>& geo_parameters,
+                             const std::string& msh_file)
+{
+  GmshSession session;
+  const bool is_geo = std::filesystem::path(mesh_file).extension() == ".geo";
+  // The first pass declares the parameters (with their defaults) in gmsh's ONELAB database;
+  // the second reads the file again with the values set there.
+  open_file(session, mesh_file);
+  if (!geo_parameters.empty())
+  {
+    const std::vector<std::string> declared = declared_parameters();
+    for (const auto& [name, value] : geo_parameters)
+    {
+      if (std::find(declared.begin(), declared.end(), name) == declared.end())
+      {
+        std::string allowed;
+        for (const std::string& declared_name : declared)
+          allowed += (allowed.empty() ? "" : ", ") + declared_name;
+        throw InputError(about(mesh_file) + "it has no parameter '" + name +
+                         "'; its parameters are: " + (allowed.empty() ? "none" : allowed) + ".");
+      }
+      gmsh::onelab::setNumber(parameter_folder + name, {value});
+    }
+    gmsh::clear();
+    open_file(session, mesh_file);
+  }
+
+  try
+  {
+    if (is_geo)
+    {
+      gmsh::option::setNumber("Mesh.ElementOrder", 1);
+      gmsh::option::setNumber("Mesh.RecombineAll", 1);
+      gmsh::model::mesh::generate(2);
+    }
+    const bool higher_order = check_element_types(mesh_file);
+    if (!is_geo && !higher_order)
+      return mesh_file;
+    if (higher_order)
+      gmsh::model::mesh::setOrder(1);
+    // A .msh file is written whole, so that cells outside the physical groups are found later.
+    gmsh::option::setNumber("Mesh.SaveAll", is_geo ? 0 : 1);
+    gmsh::option::setNumber("Mesh.Binary", 0);
+    gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
+    gmsh::write(msh_file);
+  }
+  catch (const std::string& gmsh_error)
+  {
+    const std::string errors = session.logged_errors();
+    throw InputError(about(mesh_file) +
+                     "gmsh failed: " + (errors.empty() ? one_line(gmsh_error) : errors));
+  }
+
+  const std::string errors = session.logged_errors();
+  if (!errors.empty())
+    throw InputError(about(mesh_file) + "gmsh failed: " + errors);
+  return msh_file;
+}
+
+/**
+ * Reads the .msh file `msh_file` with deal.II's GridIn into the empty `triangulation`; messages
+ * name `reported_file` (the file the user gave). Material and boundary ids are gmsh's physical
+ * tags; untagged boundary faces get boundary id 0.
+ */
+void read_msh_file(const std::string& msh_file,
+                   const std::string& reported_file,
+                   Triangulation<2>& triangulation)
+{
+  std::ifstream input(msh_file);
+  GridIn<2> grid_in;
+  grid_in.attach_triangulation(triangulation);
+  try
+  {
+    grid_in.read_msh(input);
+  }
+  catch (const ExceptionBase& error)
+  {
+    std::ostringstream details;
+    error.print_info(details);
+    throw InputError(about(reported_file) + "not a readable gmsh mesh: " + one_line(details.str()));
+  }
+}
+
+/**
+ * Checks that the cells are all quadrilaterals, each in a physical surface, and that the
+ * surfaces are numbered 1, ..., n; turns physical surface b + 1 into material id b. Returns n.
+ */
+unsigned int assign_bodies(const std::string& filename, Triangulation<2>& triangulation)
+{
+  unsigned int n_not_quadrilateral = 0;
+  std::set<types::material_id> surface_tags;
+  for (const auto& cell : triangulation.active_cell_iterators())
+  {
+    if (cell->reference_cell() != ReferenceCells::Quadrilateral)
+      ++n_not_quadrilateral;
+    surface_tags.insert(cell->material_id());
+  }
+  if (n_not_quadrilateral > 0)
+    throw InputError(about(filename) + std::to_string(n_not_quadrilateral) + " of its " +
+                     std::to_string(triangulation.n_active_cells()) +
+                     " cells are not quadrilaterals; only quadrilaterals are allowed (in a .geo "
+                     "file: Transfinite and Recombine Surface).");
+  if (surface_tags.count(0) > 0)
+    throw InputError(about(filename) +
+                     "some cells belong to no physical surface; every cell must be in physical "
+                     "surface b for its body b = 1, 2, ...");
+
+  const unsigned int n_bodies = *surface_tags.rbegin();
+  if (surface_tags.size() != n_bodies)
+  {
+    std::string found;
+    for (const types::material_id tag : surface_tags)
+      found += (found.empty() ? "" : ", ") + std::to_string(tag);
+    throw InputError(about(filename) + "its physical surfaces are " + found +
+                     ", but they must be numbered 1, 2, ..., one per body, without gaps.");
+  }
+
+  for (const auto& cell : triangulation.active_cell_iterators())
+    cell->set_material_id(cell->material_id() - 1);
+  return n_bodies;
+}
+
+/**
+ * Checks that the mesh lies in r >= 0, that every boundary face is on the axis (on r = 0) or on
+ * the surface of its own cell's body, and that the axis and each body's surface have faces.
+ * Returns the vertices of each body's surface faces.
+ */
+std::vector<std::vector<Point<2>>> check_boundaries(const std::string& filename,
+                                                    const Triangulation<2>& triangulation,
+                                                    const unsigned int n_bodies)
+{
+  const double tolerance = 1e-8 * GridTools::diameter(triangulation);
+  for (const Point<2>& vertex : triangulation.get_vertices())
+    if (vertex[0] < -tolerance)
+      throw InputError(about(filename) + "it has a vertex at r = x = " + format_number(vertex[0]) +
+                       "; an axisymmetric mesh must lie in r >= 0.");
+
+  bool has_axis = false;
+  std::vector<std::vector<Point<2>>> surface_vertices(n_bodies);
+  for (const auto& cell : triangulation.active_cell_iterators())
+    for (const auto& face : cell->face_iterators())
+    {
+      if (!face->at_boundary())
+        continue;
+      const types::boundary_id id = face->boundary_id();
+      if (id == SphereMeshIds::axis)
+      {
+        if (std::abs(face->vertex(0)[0]) > tolerance || std::abs(face->vertex(1)[0]) > tolerance)
+          throw InputError(about(filename) + "physical curve " + std::to_string(id) +
+                           " (the axis) has faces off the axis r = 0.");
+        has_axis = true;
+      }
+      else if (id == SphereMeshIds::surface(cell->material_id()))
+      {
+        surface_vertices[cell->material_id()].push_back(face->vertex(0));
+        surface_vertices[cell->material_id()].push_back(face->vertex(1));
+      }
+      else if (id == 0)
+        throw InputError(about(filename) +
+                         "some boundary faces belong to no physical curve; each must be in "
+                         "physical curve 1 (axis) or b + 1 (surface of body b = 1, 2, ...).");
+      else
+        throw InputError(about(filename) + "boundary faces of body " +
+                         std::to_string(cell->material_id() + 1) + " are in physical curve " +
+                         std::to_string(id) + ", but only 1 (axis) and " +
+                         std::to_string(SphereMeshIds::surface(cell->material_id())) +
+                         " (its surface) are allowed there.");
+    }
+
+  if (!has_axis)
+    throw InputError(about(filename) + "physical curve 1 (the axis r = 0) is missing.");
+  for (unsigned int body = 0; body < n_bodies; ++body)
+    if (surface_vertices[body].empty())
+      throw InputError(about(filename) + "physical curve " +
+                       std::to_string(SphereMeshIds::surface(body)) + " (the surface of body " +
+                       std::to_string(body + 1) + ") is missing.");
+  return surface_vertices;
+}
+
+/**
+ * The circle centred on the axis that fits `points` best (least squares in r^2 + (z - z_c)^2 =
+ * R^2, linear in z_c and R^2 - z_c^2). Throws InputError if the points are not on such a circle
+ * (relative deviation above 1e-6).
+ */
+SphereGeometry fit_sphere(const std::string& filename,
+                          const unsigned int body,
+                          const std::vector<Point<2>>& points)
+{
+  const std::string not_a_sphere =
+      about(filename) + "the surface of body " + std::to_string(body + 1) + " (physical curve " +
+      std::to_string(SphereMeshIds::surface(body)) + ") is not a circle centred on the axis r = 0";
+
+  // Work in z relative to the mean, which decouples the two unknowns.
+  double mean_z = 0;
+  for (const Point<2>& point : points)
+    mean_z += point[1] / points.size();
+  double sum_z2 = 0, sum_z_rho2 = 0, mean_rho2 = 0;
+  for (const Point<2>& point : points)
+  {
+    const double z    = point[1] - mean_z;
+    const double rho2 = point[0] * point[0] + z * z;
+    sum_z2 += z * z;
+    sum_z_rho2 += z * rho2;
+    mean_rho2 += rho2 / points.size();
+  }
+  if (sum_z2 == 0)
+    throw InputError(not_a_sphere + ".");
+  const double shifted_centre_z = sum_z_rho2 / (2 * sum_z2);
+
+  SphereGeometry sphere;
+  sphere.centre = Point<2>(0, mean_z + shifted_centre_z);
+  sphere.radius = std::sqrt(mean_rho2 + shifted_centre_z * shifted_centre_z);
+
+  double largest_deviation = 0;
+  for (const Point<2>& point : points)
+    largest_deviation =
+        std::max(largest_deviation, std::abs(point.distance(sphere.centre) - sphere.radius));
+  if (!(largest_deviation <= 1e-6 * sphere.radius))
+    throw InputError(not_a_sphere +
+                     " (the best fit, centre z = " + format_number(sphere.centre[1]) +
+                     " and radius " + format_number(sphere.radius) + ", misses a vertex by " +
+                     format_number(largest_deviation) + ").");
+  return sphere;
+}
+
+/** Sets the manifold ids of SphereMeshIds and attaches the manifolds. */
+void attach_manifolds(const std::vector<SphereGeometry>& spheres, Triangulation<2>& triangulation)
+{
+  triangulation.set_all_manifold_ids(SphereMeshIds::interior_manifold);
+  for (const auto& cell : triangulation.active_cell_iterators())
+    for (const auto& face : cell->face_iterators())
+      if (face->at_boundary())
+        face->set_manifold_id(face->boundary_id() == SphereMeshIds::axis
+                                  ? numbers::flat_manifold_id
+                                  : SphereMeshIds::surface_manifold(cell->material_id()));
+
+  for (unsigned int body = 0; body < spheres.size(); ++body)
+    triangulation.set_manifold(SphereMeshIds::surface_manifold(body),
+                               SphericalManifold<2>(spheres[body].centre));
+  // It interpolates from the cells' boundaries, so it needs the manifolds above in place.
+  TransfiniteInterpolationManifold<2> interior;
+  interior.initialize(triangulation);
+  triangulation.set_manifold(SphereMeshIds::interior_manifold, interior);
+}
+} // namespace
+
+std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
+                                           const std::map<std::string, double>& geo_parameters,
+                                           Triangulation<2>& triangulation)
+{
+  Assert(triangulation.n_cells() == 0, ExcMessage("The triangulation must be empty."));
+
+  std::error_code file_status_error;
+  if (!std::filesystem::is_regular_file(filename, file_status_error) || !std::ifstream(filename))
+    throw InputError(about(filename) + "it does not exist or cannot be read.");
+  const std::string extension = std::filesystem::path(filename).extension().string();
+  if (extension != ".geo" && extension != ".msh")
+    throw InputError(about(filename) + "unknown extension '" + extension +
+                     "'; allowed are .geo (meshed by gmsh) and .msh (a gmsh mesh).");
+  if (extension == ".msh" && !geo_parameters.empty())
+    throw InputError(about(filename) + "a .msh file is a finished mesh and takes no parameters (" +
+                     geo_parameters.begin()->first +
+                     " was given); parameters apply to .geo files.");
+
+  try
+  {
+    {
+      const TemporaryFile msh_file(".msh");
+      read_msh_file(
+          first_order_mesh(filename, geo_parameters, msh_file.name()), filename, triangulation);
+    }
+
+    const unsigned int n_bodies = assign_bodies(filename, triangulation);
+    const std::vector<std::vector<Point<2>>> surface_vertices =
+        check_boundaries(filename, triangulation, n_bodies);
+    std::vector<SphereGeometry> spheres;
+    for (unsigned int body = 0; body < n_bodies; ++body)
+      spheres.push_back(fit_sphere(filename, body, surface_vertices[body]));
+
+    attach_manifolds(spheres, triangulation);
+    return spheres;
+  }
+  catch (const InputError&)
+  {
+    triangulation.clear();
+    throw;
+  }
+}
+
+std::vector<std::string> geo_file_parameters(const std::string& geo_file)
+{
+  GmshSession session;
+  open_file(session, geo_file);
+  return declared_parameters();
+}
+} // namespace dyncontact

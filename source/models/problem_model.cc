@@ -1,0 +1,39 @@
+#include <dyncontact/models/problem_model.h>
+
+namespace dyncontact
+{
+template <int dim>
+std::vector<types::global_dof_index> ProblemModel<dim>::fixed_dofs(const NodeIndex<dim>&) const
+{
+  return {};
+}
+
+template <int dim>
+std::unique_ptr<NodeToNodeContact<dim>> ProblemModel<dim>::create_surface_contact(
+    const DoFHandler<dim>&, const Kinematics<dim>&, const NodeIndex<dim>&) const
+{
+  return nullptr;
+}
+
+template <int dim>
+std::vector<SurfaceTraction<dim>> ProblemModel<dim>::surface_tractions() const
+{
+  return {};
+}
+
+template <int dim>
+void ProblemModel<dim>::write_reference(const std::string&,
+                                        const std::vector<double>&,
+                                        const std::vector<Node<dim>>&) const
+{
+}
+
+template <int dim>
+void ProblemModel<dim>::summarize_run(const std::string&, const History&, std::ostream&) const
+{
+}
+
+template class ProblemModel<1>;
+template class ProblemModel<2>;
+template class ProblemModel<3>;
+} // namespace dyncontact

@@ -1,0 +1,158 @@
+#include <dyncontact/reference/impact_measures.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace dyncontact
+{
+namespace
+{
+/// Allowed relative deviation of each time step from the mean step.
+constexpr double relative_step_tolerance = 1e-9;
+
+[[noreturn]] void fail(const std::string& message)
+{
+  throw std::invalid_argument("measure_impact: " + message);
+}
+
+/**
+ * Check the history as documented for measure_impact() and return the mean time step, which equals
+ * every step to within the tolerance.
+ */
+double checked_time_step(const std::vector<double>& times, const std::vector<double>& force)
+{
+  if (times.size() != force.size())
+    fail("the times and forces differ in number (" + std::to_string(times.size()) + " and " +
+         std::to_string(force.size()) + ")");
+  if (times.size() < 3)
+    fail("at least 3 samples are needed, got " + std::to_string(times.size()));
+  double largest_time_magnitude = 0.0;
+  for (std::size_t n = 0; n < times.size(); ++n)
+  {
+    if (!std::isfinite(times[n]))
+      fail("time " + std::to_string(n) + " is not finite");
+    if (!std::isfinite(force[n]))
+      fail("force " + std::to_string(n) + " is not finite");
+    largest_time_magnitude = std::max(largest_time_magnitude, std::abs(times[n]));
+  }
+  for (std::size_t n = 0; n + 1 < times.size(); ++n)
+    if (!(times[n + 1] > times[n]))
+      fail("the times must increase strictly, but time " + std::to_string(n + 1) +
+           " does not exceed time " + std::to_string(n));
+
+  const double step = (times.back() - times.front()) / static_cast<double>(times.size() - 1);
+  // A difference of two stored times carries up to about two ulps of the larger one.
+  const double tolerance = relative_step_tolerance * step +
+                           4.0 * std::numeric_limits<double>::epsilon() * largest_time_magnitude;
+  for (std::size_t n = 0; n + 1 < times.size(); ++n)
+    if (std::abs(times[n + 1] - times[n] - step) > tolerance)
+      fail("the time step must be uniform, but step " + std::to_string(n) + " differs from the " +
+           "mean step by more than 1e-9 of it");
+  return step;
+}
+
+/**
+ * The zero of the straight line through (@p t_outer, @p g_outer) and (@p t_inner, @p g_inner),
+ * where g = F^{2/3} and the outer sample is the one nearer the end of the contact, clamped to the
+ * interval between @p t_outer and @p t_boundary (the sample just outside the contact). If g does
+ * not increase into the contact (g_inner <= g_outer), the line gives no zero on that side and
+ * @p t_boundary is returned.
+ */
+double extrapolated_contact_limit(const double t_boundary,
+                                  const double t_outer,
+                                  const double g_outer,
+                                  const double t_inner,
+                                  const double g_inner)
+{
+  if (!(g_inner > g_outer))
+    return t_boundary;
+  const double zero = t_outer - g_outer * (t_inner - t_outer) / (g_inner - g_outer);
+  return t_boundary < t_outer ? std::max(zero, t_boundary) : std::min(zero, t_boundary);
+}
+} // namespace
+
+ImpactMeasures measure_impact(const std::vector<double>& times, const std::vector<double>& force)
+{
+  const double step           = checked_time_step(times, force);
+  const std::size_t n_samples = times.size();
+
+  std::vector<std::size_t> positive_samples;
+  for (std::size_t n = 0; n < n_samples; ++n)
+    if (force[n] > 0.0)
+      positive_samples.push_back(n);
+  if (positive_samples.empty())
+    return {0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0};
+
+  ImpactMeasures measures{};
+  measures.contact_samples = static_cast<unsigned int>(positive_samples.size());
+  const std::size_t first  = positive_samples.front();
+  const std::size_t last   = positive_samples.back();
+
+  // Contact start and end from F^{2/3}, linear in t near both ends.
+  const auto g = [&](const std::size_t n) { return std::cbrt(force[n] * force[n]); };
+  if (first == 0)
+    measures.contact_start = times.front();
+  else if (positive_samples.size() < 2)
+    measures.contact_start = times[first - 1];
+  else
+  {
+    const std::size_t second = positive_samples[1];
+    measures.contact_start   = extrapolated_contact_limit(
+        times[first - 1], times[first], g(first), times[second], g(second));
+  }
+  if (last == n_samples - 1)
+    measures.contact_end = times.back();
+  else if (positive_samples.size() < 2)
+    measures.contact_end = times[last + 1];
+  else
+  {
+    const std::size_t second_last = positive_samples[positive_samples.size() - 2];
+    measures.contact_end          = extrapolated_contact_limit(
+        times[last + 1], times[last], g(last), times[second_last], g(second_last));
+  }
+  measures.duration = measures.contact_end - measures.contact_start;
+
+  // Peak: the vertex of the parabola F + b s + c s^2 (s in steps from the largest sample) through
+  // the largest sample and its neighbours, if it is concave.
+  const std::size_t largest =
+      static_cast<std::size_t>(std::max_element(force.begin(), force.end()) - force.begin());
+  measures.peak_force = force[largest];
+  measures.peak_time  = times[largest];
+  if (largest > 0 && largest + 1 < n_samples)
+  {
+    const double b = 0.5 * (force[largest + 1] - force[largest - 1]);
+    const double c = 0.5 * (force[largest + 1] - 2.0 * force[largest] + force[largest - 1]);
+    if (c < 0.0)
+    {
+      measures.peak_force = force[largest] - b * b / (4.0 * c);
+      measures.peak_time  = times[largest] - b / (2.0 * c) * step;
+    }
+  }
+
+  // Impulse: trapezoidal rule over all samples.
+  double force_sum = 0.5 * (force.front() + force.back());
+  for (std::size_t n = 1; n + 1 < n_samples; ++n)
+    force_sum += force[n];
+  measures.impulse = step * force_sum;
+
+  // Ringing: RMS of the period-2 component (4th difference / 16) over the windows in contact.
+  double sum_of_squares = 0.0;
+  std::size_t n_windows = 0;
+  for (std::size_t n = first + 2; n + 2 <= last; ++n)
+  {
+    const double period_2_component =
+        (force[n - 2] - 4.0 * force[n - 1] + 6.0 * force[n] - 4.0 * force[n + 1] + force[n + 2]) /
+        16.0;
+    sum_of_squares += period_2_component * period_2_component;
+    ++n_windows;
+  }
+  if (n_windows > 0)
+    measures.ringing =
+        std::sqrt(sum_of_squares / static_cast<double>(n_windows)) / measures.peak_force;
+  return measures;
+}
+} // namespace dyncontact

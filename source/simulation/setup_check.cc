@@ -1,0 +1,39 @@
+#include <dyncontact/base/output_directory.h>
+#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/bar_model.h>
+#include <dyncontact/simulation/setup_check.h>
+#include <dyncontact/simulation/simulation.h>
+
+#include <ostream>
+
+namespace dyncontact
+{
+namespace
+{
+/** Runs Simulation::prepare() for `model`, discarding what it logs. */
+template <int dim>
+void prepare(const RunParameters& parameters, std::unique_ptr<ProblemModel<dim>> model)
+{
+  std::ostream discard(nullptr);
+  Simulation<dim>(parameters, std::move(model), discard).prepare();
+}
+} // namespace
+
+void check_run_setup(const RunParameters& parameters)
+{
+  check_output_directory(parameters.output.directory);
+  if (parameters.problem.geometry == GeometryKind::bars)
+  {
+    auto model = std::make_unique<BarModel>(parameters.geometry, parameters.contact);
+    if (parameters.output.write_exact_solution)
+      model->exact_solution(parameters.time.n_steps() * parameters.time.time_step);
+    prepare<1>(parameters, std::move(model));
+  }
+  else
+  {
+    prepare<2>(parameters,
+               std::make_unique<AxisymmetricMeshModel>(
+                   parameters.mesh, parameters.bodies, parameters.contact));
+  }
+}
+} // namespace dyncontact

@@ -1,0 +1,848 @@
+#include <dyncontact/simulation/interruption.h>
+#include <dyncontact/simulation/simulation.h>
+
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_tools.h>
+
+#include <algorithm>
+#include <boost/archive/binary_iarchive.hpp>
+#include <boost/archive/binary_oarchive.hpp>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace dyncontact
+{
+namespace
+{
+/// Wall-clock seconds between two progress lines (active-set changes are reported at once).
+constexpr double progress_interval = 3.;
+} // namespace
+
+template <int dim>
+Simulation<dim>::Simulation(const RunParameters& parameters,
+                            std::unique_ptr<ProblemModel<dim>> model,
+                            std::ostream& log)
+    : parameters(parameters), model(std::move(model)),
+      is_root_rank(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0), log(log, is_root_rank),
+      newmark(parameters.time), triangulation(MPI_COMM_WORLD),
+      fe(FE_Q<dim>(this->model->element_degree()), dim), mapping(this->model->element_degree()),
+      n_steps(0), time(0.), guards(parameters.guards), step_history(history_columns()),
+      timer(this->log, TimerOutput::never, TimerOutput::wall_times)
+{
+}
+
+template <int dim>
+std::vector<std::string> Simulation<dim>::history_columns() const
+{
+  std::vector<std::string> columns = {"time",
+                                      "contact_force",
+                                      "contact_multiplier",
+                                      "active_constraints",
+                                      "newton_iterations",
+                                      "kinetic_energy",
+                                      "strain_energy",
+                                      "total_energy",
+                                      "algorithmic_energy",
+                                      "max_penetration",
+                                      "force_imbalance",
+                                      "time_step",
+                                      "step_cuts"};
+  if (dim > 1)
+    for (const std::string column : {"contact_radius", "centre_pressure"})
+      columns.push_back(column);
+  for (unsigned int b = 1; b <= model->n_bodies(); ++b)
+    for (const std::string quantity : {"momentum_", "impulse_", "u_tip_", "v_tip_", "a_tip_"})
+      columns.push_back(quantity + std::to_string(b));
+  return columns;
+}
+
+template <int dim>
+void Simulation<dim>::setup()
+{
+  model->create_triangulation(triangulation);
+  mapping.initialize(MappingQ<dim>(model->element_degree()), triangulation);
+  dof_handler.reinit(triangulation);
+  dof_handler.distribute_dofs(fe);
+  nodes      = std::make_unique<NodeIndex<dim>>(dof_handler, mapping);
+  kinematics = model->create_kinematics();
+  bodies     = std::make_unique<ElasticBodies<dim>>(
+      dof_handler, mapping, *kinematics, model->body_materials());
+  mass       = bodies->lumped_mass();
+  fixed_dofs = model->fixed_dofs(*nodes);
+  loads      = std::make_unique<SurfaceTractions<dim>>(
+      dof_handler, mapping, *kinematics, model->surface_tractions());
+  surface_contact = model->create_surface_contact(dof_handler, *kinematics, *nodes);
+  if (surface_contact)
+    contact =
+        std::make_unique<ContactConstraints<dim>>(*surface_contact, parameters.contact.formulation);
+  else
+    contact = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
+                                                        parameters.contact.formulation);
+  solver =
+      std::make_unique<ContactNewtonSolver<dim>>(dof_handler,
+                                                 *bodies,
+                                                 *contact,
+                                                 mass,
+                                                 fixed_dofs,
+                                                 parameters.newton,
+                                                 GridTools::minimal_cell_diameter(triangulation),
+                                                 timer);
+  monitors                       = model->monitor_nodes(*nodes);
+  const Tensor<1, dim> direction = model->impact_direction();
+  dof_body.assign(dof_handler.n_dofs(), 0);
+  dof_direction.assign(dof_handler.n_dofs(), 0.);
+  is_contact_dof.assign(dof_handler.n_dofs(), false);
+  is_fixed_dof.assign(dof_handler.n_dofs(), false);
+  for (const auto dof : fixed_dofs)
+    is_fixed_dof[dof] = true;
+  for (const auto& node : nodes->nodes())
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      dof_body[node.dofs[d]]      = node.body;
+      dof_direction[node.dofs[d]] = direction[d];
+    }
+  for (const auto& pair : contact->candidate_pairs())
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      is_contact_dof[pair.node_a.dofs[d]] = true;
+      if (!pair.against_wall())
+        is_contact_dof[pair.node_b->dofs[d]] = true;
+    }
+  // The pair nearest to the axis (axisymmetry: r = 0), whose pressure is centre_pressure.
+  const auto& pairs = contact->candidate_pairs();
+  innermost_pair    = std::min_element(pairs.begin(),
+                                    pairs.end(),
+                                    [](const ContactPair<dim>& a, const ContactPair<dim>& b) {
+                                      return distance_from_axis(a.node_a.position) <
+                                             distance_from_axis(b.node_a.position);
+                                    }) -
+                   pairs.begin();
+
+  const double dt = parameters.time.time_step;
+  n_steps         = parameters.time.n_steps();
+  for (const double profile_time : parameters.output.profile_times)
+    if (profile_time > (n_steps + 0.5) * dt)
+      log << "WARNING: Output/profile times: " << profile_time
+          << " lies after the end of the run (t = " << n_steps * dt
+          << "); no profile is written for it.\n";
+    else
+      profile_steps.insert(static_cast<unsigned int>(std::lround(profile_time / dt)));
+
+  log << "dyncontact: " << dof_handler.n_dofs() << " displacement DoFs, " << contact->n_pairs()
+      << " contact candidate(s), " << n_steps << " steps of dt = " << dt << ", "
+      << (newmark.scheme() == NewmarkScheme::modified ? "modified" : "classical")
+      << " Newmark (beta = " << newmark.beta() << ", gamma = " << newmark.gamma() << "), "
+      << (parameters.contact.formulation == ContactFormulation::penalty ? "penalty"
+                                                                        : "Lagrange multiplier")
+      << " contact\n";
+  if (std::abs(n_steps * dt - parameters.time.end_time) > 1e-9 * parameters.time.end_time)
+    log << "  note: end time " << parameters.time.end_time
+        << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
+  if (is_root_rank)
+    model->print_summary(log.get_stream(), dt);
+  size_automatic_penalty();
+  check_stability();
+}
+
+template <int dim>
+double Simulation<dim>::penalty_spring_omega_dt() const
+{
+  double spring_omega_dt = 0.;
+  if (parameters.contact.formulation == ContactFormulation::penalty)
+    for (const auto& pair : contact->candidate_pairs())
+    {
+      const double mass_a  = mass[pair.node_a.dofs[0]];
+      const double reduced = pair.against_wall() ? mass_a
+                                                 : mass_a * mass[pair.node_b->dofs[0]] /
+                                                       (mass_a + mass[pair.node_b->dofs[0]]);
+      spring_omega_dt      = std::max(spring_omega_dt,
+                                 newmark.time_step() * std::sqrt(pair.penalty_stiffness / reduced));
+    }
+  return spring_omega_dt;
+}
+
+namespace
+{
+/// omega dt up to which the trapezoidal rule is said to resolve a mode (period error 1/3 at 2).
+constexpr double resolved_omega_dt = 2.;
+/// Slack of the stability checks, relative: a time step they suggest is printed to 6 significant
+/// digits and may round up by 5e-7; taken as given, it must pass.
+constexpr double suggestion_rounding = 1e-6;
+} // namespace
+
+template <int dim>
+void Simulation<dim>::size_automatic_penalty()
+{
+  penalty_factor = parameters.contact.penalty_factor;
+  if (parameters.contact.formulation != ContactFormulation::penalty ||
+      !parameters.contact.automatic_penalty)
+    return;
+  // Wave problems (the bodies' highest mode resolved): an unresolved spring is the one mode the
+  // step cannot follow and the contact node chatters (bars 6.2 at factor 100: omega dt = 20,
+  // force peaks 3.2 against the exact 0.5, 117 contact episodes). At omega dt = 1 the spring's
+  // period error is 8 % and the force peak is 0.513 (1 episode). In the quasi-static regime of
+  // the spheres both are unresolved, the stiff penalty behaves and keeps the penetration small.
+  const double body_omega_dt   = model->highest_frequency() * newmark.time_step();
+  const double spring_omega_dt = penalty_spring_omega_dt();
+  if (body_omega_dt <= resolved_omega_dt * (1. + 1e-9) && spring_omega_dt > 1.)
+  {
+    // With 2 beta < gamma the spring and the mesh together must stay below the stability limit
+    // (see check_stability()); a spring softer than omega dt = 1 would buy that with a penetration
+    // growing as 1 / (omega dt)^2, so such a time step is refused instead.
+    const double limit = newmark.stability_limit();
+    if (body_omega_dt * body_omega_dt + 1. > limit * limit * (1. + 2. * suggestion_rounding))
+      throw InputError(
+          "Contact/penalty factor = auto: with Time integration/beta = " +
+          format_number(newmark.beta()) +
+          " < gamma/2 the mesh's highest mode (omega dt = " + format_number(body_omega_dt) +
+          ") leaves a penalty spring of omega dt = 1 no room below the stability limit " +
+          format_number(limit) + "; use a time step <= " +
+          format_number(newmark.time_step() * std::sqrt(limit * limit - 1.) / body_omega_dt) +
+          ", beta >= gamma/2, or Lagrange multipliers.");
+    const double scale = 1. / (spring_omega_dt * spring_omega_dt);
+    contact->scale_penalty_stiffness(scale);
+    penalty_factor *= scale;
+  }
+  log << "  penalty factor (auto): " << penalty_factor
+      << ", stiffest contact spring omega dt = " << penalty_spring_omega_dt()
+      << ", bodies' highest mode omega dt = " << body_omega_dt << "\n";
+}
+
+template <int dim>
+void Simulation<dim>::check_stability() const
+{
+  const double body_omega_dt   = model->highest_frequency() * newmark.time_step();
+  const double spring_omega_dt = penalty_spring_omega_dt();
+  // A resolved mesh (omega dt <= 2, Courant number about 1) with an unresolved penalty spring: the
+  // spring is the one frequency the step cannot follow, and the contact node chatters (see
+  // size_automatic_penalty()).
+  if (spring_omega_dt > resolved_omega_dt && body_omega_dt <= resolved_omega_dt * (1. + 1e-9))
+    log << "WARNING: the penalty spring (Contact/penalty factor = " << penalty_factor
+        << ") has omega dt = " << spring_omega_dt << " while the bodies' highest mode has "
+        << body_omega_dt
+        << ": expect contact chatter and step cuts by the energy guard. A penalty factor <= "
+        << penalty_factor * std::pow(1. / spring_omega_dt, 2)
+        << " (or auto) resolves the spring (omega dt <= 1), at the cost of more penetration.\n";
+
+  // With 2 beta < gamma Newmark is stable only for omega dt <= 1/sqrt(gamma/2 - beta). Every mode
+  // must stay below it: above, the run blows up, and the algorithmic energy, whose weight
+  // beta - gamma/2 of a.Ma is then negative, does not show it (measured: 6.1 at dt = 0.3, energy
+  // 5 -> 2.7e64 with the guards passing). A penalty spring adds its stiffness to the mesh's, so the
+  // coupled highest mode is bounded by sqrt(omega_mesh^2 + omega_spring^2) (Weyl's inequality on
+  // M^-1/2 (K + K_penalty) M^-1/2): 6.1 with a spring of omega dt = 1 on a mesh at 2 (bound 2.24,
+  // limit 2.004) went from energy 5 to 6e51. Such an input is rejected before the first step.
+  const double limit = newmark.stability_limit();
+  const auto reject = [&](const std::string& what, const double omega_dt, const std::string& remedy)
+  {
+    throw InputError(
+        "Time integration/time step = " + format_number(newmark.time_step()) + ": " + what +
+        " has omega dt = " + format_number(omega_dt) + ", above the stability limit " +
+        format_number(limit) + " of Newmark with beta = " + format_number(newmark.beta()) +
+        ", gamma = " + format_number(newmark.gamma()) + "; use a time step <= " +
+        format_number(newmark.time_step() * limit / omega_dt) + ", 2 beta >= gamma" + remedy + ".");
+  };
+  if (body_omega_dt > limit * (1. + suggestion_rounding))
+    reject("the mesh's highest mode", body_omega_dt, "");
+  const double coupled_omega_dt = std::hypot(body_omega_dt, spring_omega_dt);
+  if (spring_omega_dt > 0. && coupled_omega_dt > limit * (1. + suggestion_rounding))
+    reject("the mesh with the penalty spring (Contact/penalty factor)",
+           coupled_omega_dt,
+           " or a smaller penalty factor");
+}
+
+template <int dim>
+void Simulation<dim>::set_initial_conditions()
+{
+  displacement.reinit(dof_handler.n_dofs());
+  velocity.reinit(dof_handler.n_dofs());
+  acceleration.reinit(dof_handler.n_dofs());
+  for (const auto& node : nodes->nodes())
+  {
+    const Tensor<1, dim> v0 = model->initial_velocity(node.body, node.position);
+    for (unsigned int d = 0; d < dim; ++d)
+      velocity[node.dofs[d]] = v0[d];
+  }
+  // Initial acceleration from equilibrium, M a_0 = W(0) - Q(u_0) (no contact at t = 0).
+  bodies->assemble_internal_force(displacement, internal_force, nullptr);
+  external_force = loads->force(0.);
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    acceleration[i] = (external_force[i] - internal_force[i]) / mass[i];
+  for (const auto dof : fixed_dofs)
+    velocity[dof] = acceleration[dof] = 0.;
+  contact->update_geometry(displacement);
+  forces_on_bodies = body_forces();
+  impulses.assign(model->n_bodies(), 0.);
+  external_work = 0.;
+}
+
+template <int dim>
+typename Simulation<dim>::State Simulation<dim>::current_state() const
+{
+  return {displacement,
+          velocity,
+          acceleration,
+          internal_force,
+          external_force,
+          contact->state(),
+          solver->tangent_scale(),
+          forces_on_bodies,
+          impulses,
+          external_work};
+}
+
+template <int dim>
+void Simulation<dim>::restore(const State& state)
+{
+  displacement     = state.displacement;
+  velocity         = state.velocity;
+  acceleration     = state.acceleration;
+  internal_force   = state.internal_force;
+  external_force   = state.external_force;
+  forces_on_bodies = state.body_forces;
+  solver->set_tangent_scale(state.tangent_scale);
+  impulses      = state.impulses;
+  external_work = state.external_work;
+  contact->restore(state.contact);
+  contact->update_geometry(displacement);
+}
+
+template <int dim>
+std::vector<bool> Simulation<dim>::active_pair_dofs() const
+{
+  std::vector<bool> in_active_pair(dof_handler.n_dofs(), false);
+  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
+    if (contact->is_active(k))
+    {
+      const ContactPair<dim>& pair = contact->candidate_pairs()[k];
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        in_active_pair[pair.node_a.dofs[d]] = true;
+        if (!pair.against_wall())
+          in_active_pair[pair.node_b->dofs[d]] = true;
+      }
+    }
+  return in_active_pair;
+}
+
+template <int dim>
+std::vector<double> Simulation<dim>::body_forces() const
+{
+  // The nodes of the active pairs carry the contact force; elsewhere M a + Q - W is only the
+  // Newton residual, whose sum over a body balance_body_momenta() has removed.
+  const std::vector<bool> in_active_pair = active_pair_dofs();
+  std::vector<double> forces(model->n_bodies(), 0.);
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+  {
+    double force = external_force[i];
+    if (in_active_pair[i])
+      force += mass[i] * acceleration[i] + internal_force[i] - external_force[i];
+    forces[dof_body[i]] += dof_direction[i] * force;
+  }
+  return forces;
+}
+
+template <int dim>
+void Simulation<dim>::accumulate_impulses(const State& before)
+{
+  const double dt                  = newmark.time_step();
+  const double gamma               = newmark.gamma();
+  const std::vector<double> forces = body_forces();
+  for (unsigned int b = 0; b < forces.size(); ++b)
+    impulses[b] += dt * ((1. - gamma) * before.body_forces[b] + gamma * forces[b]);
+  // The modified scheme's velocity correction is an impulse of its own (the paper's lambda_v):
+  // the part of M (v_{n+1} - v_n) that the Newmark update of the accelerations does not explain.
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    if (is_contact_dof[i])
+      impulses[dof_body[i]] +=
+          dof_direction[i] * mass[i] *
+          (velocity[i] - before.velocity[i] -
+           dt * ((1. - gamma) * before.acceleration[i] + gamma * acceleration[i]));
+  forces_on_bodies = forces;
+  // Work of the external forces, trapezoidal: (W_n + W_{n+1}) / 2 . (u_{n+1} - u_n).
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    external_work += 0.5 * (before.external_force[i] + external_force[i]) *
+                     (displacement[i] - before.displacement[i]);
+}
+
+template <int dim>
+unsigned int Simulation<dim>::do_time_step(const State& before)
+{
+  const Vector<double>& old_displacement = before.displacement;
+  const Vector<double>& old_velocity     = before.velocity;
+  const Vector<double>& old_acceleration = before.acceleration;
+  Vector<double> predictor, increment(dof_handler.n_dofs());
+  newmark.predict(old_displacement, old_velocity, old_acceleration, predictor);
+  Vector<double> last_configuration = old_displacement; // as an increment over the predictor
+  last_configuration -= predictor;
+  external_force    = loads->force(time);
+  const auto report = solver->solve(
+      predictor, newmark.inertia_factor(), external_force, last_configuration, increment);
+  internal_force = solver->internal_force();
+  balance_body_momenta(increment);
+  displacement = predictor;
+  displacement += increment;
+  contact->update_geometry(displacement);
+  newmark.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
+  if (newmark.scheme() == NewmarkScheme::modified)
+    contact->apply_rate_correction(
+        newmark,
+        mass,
+        {old_displacement, old_velocity, old_acceleration, displacement, increment},
+        velocity,
+        acceleration);
+  accumulate_impulses(before);
+  return report.linear_solves;
+}
+
+template <int dim>
+void Simulation<dim>::balance_body_momenta(Vector<double>& increment) const
+{
+  // The residual r = c M (u - u~) + Q(u) - W - G^T lambda left within the Newton tolerance, summed
+  // over the nodes of a body that carry no contact force, along the impact direction, is a
+  // momentum error of the step that no recovered force accounts for (at the active pairs' nodes
+  // the residual is part of the recovered contact force, body_forces()). A rigid translation t of
+  // the body along that direction changes only the inertia term (Q is invariant, W and G^T lambda
+  // do not depend on it), by c t m at every DoF. Choosing t to cancel the sum makes the step's
+  // momentum change equal its recovered impulse exactly; t is the residual over c M, far below the
+  // gap tolerance.
+  Vector<double> contact_force(dof_handler.n_dofs());
+  contact->add_contact_forces(contact_force);
+  const std::vector<bool> in_active_pair = active_pair_dofs();
+  const double c                         = newmark.inertia_factor();
+  std::vector<double> residual_sum(model->n_bodies(), 0.), inertia_sum(model->n_bodies(), 0.);
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    if (!is_fixed_dof[i] && dof_direction[i] != 0. && !in_active_pair[i])
+    {
+      const double residual =
+          c * mass[i] * increment[i] + internal_force[i] - external_force[i] - contact_force[i];
+      residual_sum[dof_body[i]] += dof_direction[i] * residual;
+      inertia_sum[dof_body[i]] += c * mass[i] * dof_direction[i] * dof_direction[i];
+    }
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    if (!is_fixed_dof[i] && dof_direction[i] != 0. && inertia_sum[dof_body[i]] > 0.)
+      increment[i] -= residual_sum[dof_body[i]] / inertia_sum[dof_body[i]] * dof_direction[i];
+}
+
+template <int dim>
+Vector<double> Simulation<dim>::net_internal_force() const
+{
+  Vector<double> net = internal_force;
+  net -= external_force;
+  return net;
+}
+
+template <int dim>
+Vector<double> Simulation<dim>::contact_traction(const std::vector<double>& pressures) const
+{
+  Vector<double> traction(dof_handler.n_dofs());
+  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
+  {
+    const ContactPair<dim>& pair = contact->candidate_pairs()[k];
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      traction[pair.node_a.dofs[d]]  = -pressures[k] * pair.normal[d];
+      traction[pair.node_b->dofs[d]] = pressures[k] * pair.normal[d];
+    }
+  }
+  return traction;
+}
+
+template <int dim>
+void Simulation<dim>::write_contact_pressure(const std::vector<double>& pressures) const
+{
+  std::vector<typename FieldOutput<dim>::PressureSample> samples;
+  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
+    samples.push_back({current_position(contact->candidate_pairs()[k].node_a, displacement),
+                       contact->gap(k, displacement),
+                       contact->active_multiplier(k),
+                       pressures[k],
+                       contact->is_active(k)});
+  field_output->write_contact_pressure(time, samples);
+}
+
+template <int dim>
+typename Simulation<dim>::Measures Simulation<dim>::measure() const
+{
+  Measures measures{};
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+  {
+    measures.kinetic_energy += 0.5 * mass[i] * velocity[i] * velocity[i];
+    measures.acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
+  }
+  // After a step the solver's last evaluation was at this displacement: reuse its pass.
+  measures.strain_energy =
+      step_history.n_rows() == 0 ? bodies->strain_energy(displacement) : solver->strain_energy();
+  measures.algorithmic_energy = newmark.algorithmic_energy(
+      measures.kinetic_energy, measures.strain_energy, measures.acceleration_energy);
+  if (step_history.n_rows() > 0)
+  {
+    const Vector<double> net_force = net_internal_force();
+    measures.contact_force   = contact->recovered_contact_force(mass, acceleration, net_force);
+    const auto side_forces   = contact->recovered_side_forces(mass, acceleration, net_force);
+    measures.force_imbalance = side_forces.on_a - side_forces.on_b;
+  }
+  measures.momenta.assign(model->n_bodies(), 0.);
+  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+    measures.momenta[dof_body[i]] += mass[i] * dof_direction[i] * velocity[i];
+  return measures;
+}
+
+template <int dim>
+StepGuards::Figures Simulation<dim>::guard_figures(const Measures& measures) const
+{
+  double multiplier_magnitude = 0.;
+  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
+    multiplier_magnitude += std::abs(contact->active_multiplier(k));
+  const auto energy_at_this_step_size = [this](const Measures& state)
+  {
+    return newmark.algorithmic_energy(
+        state.kinetic_energy, state.strain_energy, state.acceleration_energy);
+  };
+  return {time,
+          guarded_energy + energy_at_this_step_size(measures) -
+              energy_at_this_step_size(accepted_measures),
+          external_work,
+          measures.contact_force,
+          multiplier_magnitude,
+          measures.momenta,
+          impulses};
+}
+
+template <int dim>
+void Simulation<dim>::record_step(const Measures& measures,
+                                  const unsigned int nominal_step,
+                                  const unsigned int linear_solves,
+                                  const unsigned int cuts)
+{
+  std::vector<double> row = {time,
+                             measures.contact_force,
+                             contact->total_multiplier(),
+                             static_cast<double>(contact->n_active()),
+                             static_cast<double>(linear_solves),
+                             measures.kinetic_energy,
+                             measures.strain_energy,
+                             measures.kinetic_energy + measures.strain_energy,
+                             measures.algorithmic_energy,
+                             contact->max_penetration(displacement),
+                             measures.force_imbalance,
+                             step_history.n_rows() == 0 ? 0. : newmark.time_step(),
+                             static_cast<double>(cuts)};
+  // Contact pressures (surface contact only): one solve per step, skipped without contact.
+  const std::vector<double> pressures = surface_contact && contact->n_active() > 0
+                                            ? contact->contact_pressures(displacement)
+                                            : std::vector<double>(contact->n_pairs(), 0.);
+  if (dim > 1)
+  {
+    row.push_back(contact->contact_radius(displacement));
+    row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
+  }
+  const Tensor<1, dim> direction = model->impact_direction();
+  for (unsigned int b = 0; b < monitors.size(); ++b)
+  {
+    double u_tip = 0., v_tip = 0., a_tip = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      u_tip += direction[d] * displacement[monitors[b].dofs[d]];
+      v_tip += direction[d] * velocity[monitors[b].dofs[d]];
+      a_tip += direction[d] * acceleration[monitors[b].dofs[d]];
+    }
+    row.insert(row.end(), {measures.momenta[b], impulses[b], u_tip, v_tip, a_tip});
+  }
+  step_history.add_row(row);
+  if (step_history.n_rows() == 1 || nominal_step > 0)
+    nominal_rows.push_back(step_history.n_rows() - 1);
+
+  const unsigned int step = step_history.n_rows() == 1 ? 0 : nominal_step;
+  if (step_history.n_rows() > 1 && nominal_step == 0)
+    return; // profiles and fields on the nominal grid only
+  TimerOutput::Scope scope(timer, "output");
+  if (parameters.output.vtu_interval > 0 && step % parameters.output.vtu_interval == 0)
+  {
+    const Vector<double> traction =
+        surface_contact ? contact_traction(pressures) : Vector<double>();
+    field_output->write_fields(
+        step, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
+  }
+  if (profile_steps.count(step) > 0 && is_root_rank)
+  {
+    field_output->write_profile(time, nodes->nodes(), displacement, velocity, acceleration);
+    if (surface_contact)
+      write_contact_pressure(pressures);
+  }
+}
+
+template <int dim>
+void Simulation<dim>::write_reference_and_summary()
+{
+  if (!is_root_rank)
+    return;
+  const std::string& directory = parameters.output.directory;
+  if (parameters.output.write_exact_solution)
+    model->write_reference(directory, step_history.column("time"), monitors);
+  // The impact measures need uniform samples: the rows on the nominal grid.
+  History nominal_history(step_history.column_names());
+  for (const unsigned int row : nominal_rows)
+    nominal_history.add_row(step_history.row(row));
+  model->summarize_run(directory, nominal_history, log.get_stream());
+}
+
+template <int dim>
+std::string Simulation<dim>::problem_fingerprint() const
+{
+  std::ostringstream text;
+  text << std::setprecision(17) << "dimension " << dim << ", " << dof_handler.n_dofs() << " DoFs, "
+       << contact->n_pairs() << " contact candidates, " << model->n_bodies() << " bodies, dt "
+       << parameters.time.time_step << ", maximum step cuts " << parameters.time.max_step_cuts
+       << ", beta " << newmark.beta() << ", gamma " << newmark.gamma() << ", "
+       << (newmark.scheme() == NewmarkScheme::modified ? "modified" : "classical") << ", "
+       << (parameters.contact.formulation == ContactFormulation::penalty ? "penalty"
+                                                                         : "Lagrange multiplier");
+  return text.str();
+}
+
+template <int dim>
+template <class Archive>
+void Simulation<dim>::serialize_state(Archive& archive)
+{
+  typename ContactConstraints<dim>::State contact_state = contact->state();
+  double tangent_scale                                  = solver->tangent_scale();
+  archive& time;
+  archive& displacement;
+  archive& velocity;
+  archive& acceleration;
+  archive& internal_force;
+  archive& external_force;
+  archive& contact_state.active;
+  archive& contact_state.multipliers;
+  archive& forces_on_bodies;
+  archive& impulses;
+  archive& external_work;
+  archive& guarded_energy;
+  archive& accepted_measures.kinetic_energy;
+  archive& accepted_measures.strain_energy;
+  archive& accepted_measures.acceleration_energy;
+  archive&* controller;
+  archive& guards;
+  archive& step_history;
+  archive& nominal_rows;
+  archive& counters.total_solves;
+  archive& counters.total_cuts;
+  archive& counters.steps_taken;
+  archive& counters.cut_places;
+  archive& tangent_scale;
+  archive&* field_output;
+  if (Archive::is_loading::value)
+  {
+    contact->restore(contact_state);
+    contact->update_geometry(displacement);
+    solver->set_tangent_scale(tangent_scale);
+  }
+}
+
+template <int dim>
+void Simulation<dim>::write_checkpoint()
+{
+  if (!is_root_rank)
+    return;
+  TimerOutput::Scope scope(timer, "output");
+  const std::string file = parameters.output.directory + "/checkpoint.bin";
+  {
+    std::ofstream stream(file + ".tmp", std::ios::binary);
+    boost::archive::binary_oarchive archive(stream);
+    std::string fingerprint = problem_fingerprint();
+    archive << fingerprint;
+    serialize_state(archive);
+    if (!stream)
+      throw SolverFailure("cannot write the checkpoint " + file + ".tmp");
+  }
+  // Atomic: a run killed while writing leaves the previous checkpoint intact.
+  std::filesystem::rename(file + ".tmp", file);
+}
+
+template <int dim>
+void Simulation<dim>::read_checkpoint(const std::string& directory)
+{
+  const std::string file = directory + "/checkpoint.bin";
+  std::ifstream stream(file, std::ios::binary);
+  if (!stream)
+    throw InputError("--resume " + directory + ": there is no checkpoint " + file +
+                     " (a run writes one when interrupted or every Output/checkpoint interval "
+                     "steps).");
+  try
+  {
+    boost::archive::binary_iarchive archive(stream);
+    std::string fingerprint;
+    archive >> fingerprint;
+    if (fingerprint != problem_fingerprint())
+      throw InputError("--resume " + directory + ": the checkpoint belongs to another problem (" +
+                       fingerprint + ") than this one (" + problem_fingerprint() + ").");
+    serialize_state(archive);
+  }
+  catch (const boost::archive::archive_exception& error)
+  {
+    throw InputError("--resume " + directory + ": " + file + " is not a readable checkpoint (" +
+                     error.what() + ").");
+  }
+}
+
+template <int dim>
+void Simulation<dim>::prepare()
+{
+  setup();
+  set_initial_conditions();
+}
+
+template <int dim>
+void Simulation<dim>::run(const std::string& resume_directory)
+{
+  prepare();
+  const std::string& directory = parameters.output.directory;
+  field_output = std::make_unique<FieldOutput<dim>>(dof_handler, mapping, directory);
+  if (dim == 2 && is_root_rank)
+    field_output->write_cell_outlines(nodes->nodes());
+
+  const double dt = parameters.time.time_step;
+  controller      = std::make_unique<StepController>(dt, n_steps, parameters.time.max_step_cuts);
+  const Measures initial = measure();
+  guarded_energy         = initial.algorithmic_energy;
+  accepted_measures      = initial;
+  guards.initialize(guard_figures(initial));
+  if (resume_directory.empty())
+  {
+    if (is_root_rank)
+      step_history.attach_file(directory + "/history.csv");
+    record_step(initial, 0, 0, 0);
+  }
+  else
+  {
+    read_checkpoint(resume_directory);
+    if (is_root_rank)
+      step_history.attach_file(directory + "/history.csv");
+    log << "dyncontact: resumed from " << resume_directory << "/checkpoint.bin at t = " << time
+        << "\n";
+  }
+
+  const auto wall_start       = std::chrono::steady_clock::now();
+  auto last_progress          = wall_start;
+  unsigned int steps_this_run = 0;
+  const double start_fraction = time / (n_steps * dt); // of the run, done before this one started
+  while (!controller->finished())
+  {
+    const State before              = current_state();
+    const unsigned int nominal_step = controller->nominal_step();
+    unsigned int linear_solves = 0, cuts = 0;
+    std::string failure;
+    Measures measures;
+    for (;;)
+    {
+      newmark.set_time_step(controller->step_size());
+      time    = controller->end_time();
+      failure = "";
+      try
+      {
+        linear_solves += do_time_step(before);
+        measures                          = measure();
+        const StepGuards::Figures figures = guard_figures(measures);
+        failure                           = guards.check(figures);
+        if (failure.empty())
+        {
+          guards.accept(figures);
+          guarded_energy    = figures.energy;
+          accepted_measures = measures;
+          break;
+        }
+      }
+      catch (const SolverFailure& solver_failure)
+      {
+        failure = solver_failure.what();
+      }
+      restore(before);
+      while (!failure.empty() && (failure.back() == '.' || failure.back() == ' '))
+        failure.pop_back();
+      const double failed_size = controller->step_size();
+      if (!controller->cut())
+      {
+        write_reference_and_summary();
+        throw SolverFailure("step " + std::to_string(nominal_step) +
+                            " (t = " + format_number(time) + "): " + failure +
+                            ", still at the smallest step " + format_number(failed_size) +
+                            " (dt / 2^" + std::to_string(parameters.time.max_step_cuts) +
+                            ", Time integration/maximum step cuts). Results up to t = " +
+                            format_number(controller->start_time()) + " are in " + directory + ".");
+      }
+      ++cuts;
+      ++counters.total_cuts;
+      if (counters.cut_places.size() < 10)
+        counters.cut_places.push_back(format_number(controller->start_time()));
+      log << "  step " << nominal_step << " (t = " << time << "): " << failure
+          << "; cutting the step to " << controller->step_size() << "\n";
+    }
+    const auto active_before =
+        std::count(before.contact.active.begin(), before.contact.active.end(), true);
+    const bool nominal_time_reached = controller->accept();
+    ++counters.steps_taken;
+    ++steps_this_run;
+    counters.total_solves += linear_solves;
+    record_step(measures, nominal_time_reached ? nominal_step : 0, linear_solves, cuts);
+    // Every rank stops at the same step, whichever received the signal.
+    const int signal            = Utilities::MPI::max(interrupt_signal(), MPI_COMM_WORLD);
+    const unsigned int interval = parameters.output.checkpoint_interval;
+    if ((signal != 0 && !controller->finished()) ||
+        (interval > 0 && nominal_time_reached && nominal_step % interval == 0))
+      write_checkpoint();
+    if (signal != 0 && !controller->finished())
+    {
+      write_reference_and_summary();
+      throw RunInterrupted("signal " + std::to_string(signal) + " at t = " + format_number(time) +
+                               ": checkpoint written to " + directory + "/checkpoint.bin",
+                           signal,
+                           directory);
+    }
+
+    const auto now              = std::chrono::steady_clock::now();
+    const double since_progress = std::chrono::duration<double>(now - last_progress).count();
+    if (show_progress && (static_cast<long>(contact->n_active()) != active_before ||
+                          since_progress >= progress_interval || controller->finished()))
+    {
+      last_progress              = now;
+      const double elapsed       = std::chrono::duration<double>(now - wall_start).count();
+      const double done          = time / (n_steps * dt);
+      const double done_this_run = std::max(done - start_fraction, 1e-9);
+      log << "  step " << std::setw(6) << nominal_step << "/" << n_steps
+          << "  t = " << std::setw(10) << time << "  " << std::fixed << std::setprecision(1)
+          << std::setw(5) << 100. * done << "%  " << std::setw(7)
+          << steps_this_run / std::max(elapsed, 1e-9) << " steps/s  ETA " << std::setw(6)
+          << elapsed * (1. - done) / done_this_run << " s  " << std::setprecision(2)
+          << static_cast<double>(counters.total_solves) / counters.steps_taken << " solves/step"
+          << std::defaultfloat << std::setprecision(6) << "  active pairs " << contact->n_active()
+          << "  energy " << step_history.value(step_history.n_rows() - 1, "algorithmic_energy")
+          << "\n";
+    }
+  }
+  write_reference_and_summary();
+  for (const auto& warning : guards.warnings())
+    log << warning << "\n";
+  const double wall_time =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+  log << "dyncontact: done, " << n_steps << " steps (" << counters.steps_taken << " taken, "
+      << counters.total_cuts << " step cuts";
+  for (unsigned int c = 0; c < counters.cut_places.size(); ++c)
+    log << (c == 0 ? " at t = " : ", ") << counters.cut_places[c];
+  if (counters.total_cuts > counters.cut_places.size())
+    log << ", ...";
+  log << "), " << counters.total_solves << " linear solves, wall time " << wall_time << " s (";
+  const auto phases = timer.get_summary_data(TimerOutput::total_wall_time);
+  for (auto phase = phases.begin(); phase != phases.end(); ++phase)
+    log << (phase == phases.begin() ? "" : ", ") << phase->first << " " << phase->second << " s";
+  log << "). Results in " << directory << "\n";
+}
+
+template class Simulation<1>;
+template class Simulation<2>;
+} // namespace dyncontact
