@@ -39,6 +39,7 @@ void on_root_rank(const Task& task)
   if (!error.empty())
     throw dyncontact::InputError(error);
 }
+
 /** Throws InputError unless `directory` holds a checkpoint to resume from. */
 void check_checkpoint_exists(const std::string& directory)
 {
@@ -46,6 +47,14 @@ void check_checkpoint_exists(const std::string& directory)
     throw dyncontact::InputError("--resume " + directory + ": there is no checkpoint " + directory +
                                  "/checkpoint.bin (a run writes one when interrupted or every "
                                  "Output/checkpoint interval steps).");
+}
+
+/** The parameter file's warnings (deprecated entries), one line each, from rank 0. */
+void print_warnings(const dyncontact::RunParameters& parameters)
+{
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    for (const std::string& warning : parameters.warnings)
+      std::cout << "WARNING: " << warning << "\n";
 }
 } // namespace
 
@@ -71,6 +80,7 @@ int main(int argc, char** argv)
     case CommandLine::Action::validate:
     {
       const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+      print_warnings(reader.parameters());
       check_run_setup(reader.parameters());
       if (!command_line.resume_directory.empty())
         check_checkpoint_exists(command_line.resume_directory);
@@ -82,6 +92,7 @@ int main(int argc, char** argv)
       const ParameterReader reader(command_line.parameter_file, command_line.overrides);
       const RunParameters& parameters = reader.parameters();
       const std::string& resume       = command_line.resume_directory;
+      print_warnings(parameters);
       on_root_rank(
           [&]
           {

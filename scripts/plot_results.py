@@ -146,12 +146,13 @@ def read_parameters(run_dir):
 
 
 def run_label(run_dir):
-    """Label a run by 'set scheme' in the Time integration section of parameters.prm,
-    falling back to the directory name."""
-    scheme = read_parameters(run_dir).get('time integration/scheme')
-    if scheme is None:
+    """Label a run by its contact dynamics in parameters.prm (none: the classical Newmark,
+    taylor-papadopoulos: the paper's modified Newmark), falling back to the directory name."""
+    dynamics = read_parameters(run_dir).get('contact/dynamics')
+    names = {'none': 'classical Newmark', 'taylor-papadopoulos': 'modified Newmark'}
+    if dynamics is None:
         return os.path.basename(os.path.normpath(run_dir))
-    return f'{scheme} Newmark' if scheme in ('classical', 'modified') else scheme
+    return names.get(dynamics, dynamics)
 
 
 def sphere_label(run_dir, label):

@@ -235,7 +235,14 @@ void declare_all(ParameterHandler& prm, const std::optional<ProblemSize>& size)
   OutputParameters::declare_parameters(prm);
 }
 
-const std::string geometry_names = "bars|axisymmetric mesh";
+/** The deprecated Time integration/scheme: the Contact/dynamics each name stands for. */
+const NameTable<ContactDynamicsKind>& deprecated_scheme_names()
+{
+  static const NameTable<ContactDynamicsKind> names{
+      {"classical", ContactDynamicsKind::none},
+      {"modified", ContactDynamicsKind::taylor_papadopoulos}};
+  return names;
+}
 
 /** Parses `filename` into `prm`, turning deal.II's exceptions into InputError. */
 void parse_file(ParameterHandler& prm, const std::string& filename, const bool skip_undefined)
@@ -249,14 +256,39 @@ void parse_file(ParameterHandler& prm, const std::string& filename, const bool s
     throw InputError("parameter file '" + filename + "': " + exception_text(exception));
   }
 }
+/// Contact/dynamics when not given: the paper's modified Newmark
+const ContactDynamicsKind default_contact_dynamics = ContactDynamicsKind::taylor_papadopoulos;
 } // namespace
+
+const NameTable<ContactDynamicsKind>& contact_dynamics_names()
+{
+  static const NameTable<ContactDynamicsKind> names{
+      {"none", ContactDynamicsKind::none},
+      {"taylor-papadopoulos", ContactDynamicsKind::taylor_papadopoulos}};
+  return names;
+}
+
+const NameTable<ContactFormulation>& contact_formulation_names()
+{
+  static const NameTable<ContactFormulation> names{
+      {"lagrange multiplier", ContactFormulation::lagrange_multiplier},
+      {"penalty", ContactFormulation::penalty}};
+  return names;
+}
+
+const NameTable<GeometryKind>& geometry_names()
+{
+  static const NameTable<GeometryKind> names{
+      {"bars", GeometryKind::bars}, {"axisymmetric mesh", GeometryKind::axisymmetric_mesh}};
+  return names;
+}
 
 void ProblemParameters::declare_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Problem");
   prm.declare_entry("geometry",
                     "bars",
-                    Patterns::Selection(geometry_names),
+                    Patterns::Selection(geometry_names().selection()),
                     "Kind of problem. bars: 1D bars on the x axis (subsection Geometry). "
                     "axisymmetric mesh: bodies of revolution in the (r, z) half plane from a gmsh "
                     "mesh, 9-node quadrilaterals (subsections Mesh and Bodies).");
@@ -266,7 +298,7 @@ void ProblemParameters::declare_parameters(ParameterHandler& prm)
 void ProblemParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Problem");
-  geometry = prm.get("geometry") == "bars" ? GeometryKind::bars : GeometryKind::axisymmetric_mesh;
+  geometry = geometry_names().parse(prm.get("geometry"), "Problem/geometry");
   prm.leave_subsection();
 }
 
@@ -409,11 +441,11 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Time integration");
   prm.declare_entry("scheme",
-                    "modified",
-                    Patterns::Selection("classical|modified"),
-                    "Newmark variant. classical: contact constrains displacements only. modified: "
-                    "Taylor & Papadopoulos (1993), normal velocity and acceleration of every "
-                    "active contact pair are made continuous after each step (paper eqs. 19-24).");
+                    "",
+                    Patterns::Anything(),
+                    "Deprecated: use Contact/dynamics. classical = Contact/dynamics none, "
+                    "modified = taylor-papadopoulos; given, it sets Contact/dynamics and the run "
+                    "prints a warning. Empty: not given.");
   prm.declare_entry("beta",
                     "0.25",
                     Patterns::Double(0., 0.5),
@@ -445,9 +477,11 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
 void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Time integration");
-  scheme = prm.get("scheme") == "modified" ? NewmarkScheme::modified : NewmarkScheme::classical;
-  beta   = prm.get_double("beta");
-  gamma  = prm.get_double("gamma");
+  deprecated_scheme = prm.get("scheme");
+  if (!deprecated_scheme.empty())
+    deprecated_scheme_names().parse(deprecated_scheme, "Time integration/scheme");
+  beta  = prm.get_double("beta");
+  gamma = prm.get_double("gamma");
   if (!(beta > 0.))
     throw InputError("Time integration/beta = 0 is not supported: with beta = 0 the displacement "
                      "u_{n+1} is explicit and the contact constraint cannot act on it. Use "
@@ -472,9 +506,18 @@ unsigned int TimeIntegrationParameters::n_steps() const
 void ContactParameters::declare_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Contact");
+  prm.declare_entry("dynamics",
+                    contact_dynamics_names().name(default_contact_dynamics),
+                    Patterns::Selection(contact_dynamics_names().selection()),
+                    "Treatment of the contact nodes' velocities and accelerations. none: "
+                    "classical Newmark, contact constrains displacements only. "
+                    "taylor-papadopoulos: the paper's modified Newmark (Taylor & Papadopoulos "
+                    "1993, eqs. 19-24): after each step the normal velocity and acceleration of "
+                    "every active pair are made continuous, conserving momentum; needs Lagrange "
+                    "multipliers.");
   prm.declare_entry("formulation",
                     "lagrange multiplier",
-                    Patterns::Selection("lagrange multiplier|penalty"),
+                    Patterns::Selection(contact_formulation_names().selection()),
                     "Enforcement of the non-penetration condition g >= 0. lagrange multiplier: "
                     "exact, one multiplier unknown per candidate pair (saddle-point solve). "
                     "penalty: force eps <-g> along the normal (allows small penetration).");
@@ -499,8 +542,8 @@ void ContactParameters::declare_parameters(ParameterHandler& prm)
 void ContactParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Contact");
-  formulation              = prm.get("formulation") == "penalty" ? ContactFormulation::penalty
-                                                                 : ContactFormulation::lagrange_multiplier;
+  formulation = contact_formulation_names().parse(prm.get("formulation"), "Contact/formulation");
+  dynamics    = contact_dynamics_names().parse(prm.get("dynamics"), "Contact/dynamics");
   const std::string factor = prm.get("penalty factor");
   automatic_penalty        = factor == "auto";
   penalty_factor           = quasi_static_penalty_factor;
@@ -852,19 +895,37 @@ ParameterReader::ParameterReader(const std::string& filename,
   {
     throw InputError("parameter file '" + filename + "': " + exception_text(exception));
   }
-  check_consistency();
+  resolve_and_check();
 }
 
-void ParameterReader::check_consistency() const
+void ParameterReader::resolve_and_check()
 {
-  const RunParameters& p = run_parameters;
+  RunParameters& p            = run_parameters;
+  const std::string& old_name = p.time.deprecated_scheme;
+  const auto& dynamics_names  = contact_dynamics_names();
+  if (!old_name.empty())
+  {
+    const ContactDynamicsKind meant =
+        deprecated_scheme_names().parse(old_name, "Time integration/scheme");
+    // Contact/dynamics left at its default takes the meaning of the old entry; set otherwise, the
+    // two must agree.
+    if (p.contact.dynamics != default_contact_dynamics && p.contact.dynamics != meant)
+      throw InputError("Time integration/scheme = " + old_name + " (deprecated, meaning Contact/" +
+                       "dynamics = " + dynamics_names.name(meant) + ") contradicts Contact/" +
+                       "dynamics = " + dynamics_names.name(p.contact.dynamics) +
+                       "; remove Time integration/scheme.");
+    p.contact.dynamics = meant;
+    p.warnings.push_back("Time integration/scheme is deprecated: write Contact/dynamics = " +
+                         dynamics_names.name(meant) + " instead of scheme = " + old_name + ".");
+  }
   if (p.contact.formulation == ContactFormulation::penalty &&
-      p.time.scheme == NewmarkScheme::modified)
+      p.contact.dynamics == ContactDynamicsKind::taylor_papadopoulos)
     throw InputError(
-        "Contact/formulation = penalty cannot be combined with Time integration/scheme = modified: "
-        "the rate correction assumes exactly closed pairs; a penalized pair stays penetrated and "
-        "the correction glues it (the bars of case 6.2 never separate). Use the classical scheme "
-        "with a penalty, or Lagrange multipliers with the modified scheme.");
+        "Contact/formulation = penalty cannot be combined with Contact/dynamics = "
+        "taylor-papadopoulos: the rate correction assumes exactly closed pairs; a penalized pair "
+        "stays penetrated and the correction glues it (the bars of case 6.2 never separate). Use "
+        "Contact/dynamics = none with a penalty, or Lagrange multipliers with "
+        "taylor-papadopoulos.");
 }
 
 void ParameterReader::write_records(const std::string& directory) const

@@ -46,17 +46,6 @@ unsigned int ContactConstraints<dim>::n_active() const
 }
 
 template <int dim>
-double ContactConstraints<dim>::normal_component(const Node<dim>& node,
-                                                 const Tensor<1, dim>& normal,
-                                                 const Vector<double>& field) const
-{
-  double component = 0.;
-  for (unsigned int d = 0; d < dim; ++d)
-    component += normal[d] * field[node.dofs[d]];
-  return component;
-}
-
-template <int dim>
 double ContactConstraints<dim>::normal_balance(const Node<dim>& node,
                                                const Tensor<1, dim>& normal,
                                                const Vector<double>& lumped_mass,
@@ -196,71 +185,6 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
       changed              = true;
     }
   return changed;
-}
-
-template <int dim>
-void ContactConstraints<dim>::apply_rate_correction(const Newmark& newmark,
-                                                    const Vector<double>& lumped_mass,
-                                                    const NewmarkStep& step,
-                                                    Vector<double>& v_new,
-                                                    Vector<double>& a_new) const
-{
-  const double dt    = newmark.time_step();
-  const double beta  = newmark.beta();
-  const double gamma = newmark.gamma();
-
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-  {
-    if (!active[k])
-      continue;
-    const ContactPair<dim>& pair = pairs[k];
-    const Tensor<1, dim>& normal = pair.normal;
-    // [[f]] = (f_B - f_A) . n; a wall is at rest, so only its position enters.
-    const auto jump = [&](const Vector<double>& field)
-    {
-      const double side_b =
-          pair.against_wall() ? 0. : normal_component(*pair.node_b, normal, field);
-      return side_b - normal_component(pair.node_a, normal, field);
-    };
-    // Eq. (21) holds for a pair closed at t_{n+1}, where its numerator's [[X + u_n]] equals
-    // g_n - g_{n+1}; the latter keeps [[a_{n+1}]] = 0 exact even for the residual gap Newton leaves
-    // within its tolerance (the literal form would leave [[a_{n+1}]] = g_{n+1} / (beta dt^2)).
-    const double position_jump = gap(k, step.old_displacement) - gap(k, step.new_displacement);
-    const double mass_a        = lumped_mass[pair.node_a.dofs[0]];
-    const double inverse_weight_sum =
-        1. / mass_a + (pair.against_wall() ? 0. : 1. / lumped_mass[pair.node_b->dofs[0]]);
-
-    // Eqs. (21) and (22).
-    const Vector<double>& v_old = step.old_velocity;
-    const Vector<double>& a_old = step.old_acceleration;
-    const double lambda_a =
-        (position_jump + dt * jump(v_old) + dt * dt * (0.5 - beta) * jump(a_old)) /
-        inverse_weight_sum;
-    const double lambda_v = (jump(v_old) + dt * (1. - gamma) * jump(a_old)) / inverse_weight_sum;
-
-    // Recovery of the normal rates of side a = 1 (A, sign -1) and a = 2 (B, sign +1).
-    const auto correct_side = [&](const Node<dim>& node, const double sign)
-    {
-      // [u_{n+1} - u_n - dt v_n - dt^2 (1/2 - beta) a_n] . n is the increment over the predictor.
-      const double mass = lumped_mass[node.dofs[0]];
-      const double a_normal =
-          (normal_component(node, normal, step.increment) + sign * lambda_a / mass) *
-          newmark.inertia_factor();
-      const double v_normal = normal_component(node, normal, v_old) +
-                              dt * (1. - gamma) * normal_component(node, normal, a_old) +
-                              dt * gamma * a_normal - sign * lambda_v / mass;
-      const double a_shift = a_normal - normal_component(node, normal, a_new);
-      const double v_shift = v_normal - normal_component(node, normal, v_new);
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        a_new[node.dofs[d]] += a_shift * normal[d];
-        v_new[node.dofs[d]] += v_shift * normal[d];
-      }
-    };
-    correct_side(pair.node_a, -1.);
-    if (!pair.against_wall())
-      correct_side(*pair.node_b, +1.);
-  }
 }
 
 template <int dim>

@@ -84,6 +84,7 @@ void Simulation<dim>::setup()
   else
     contact = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
                                                         parameters.contact.formulation);
+  contact_dynamics = create_contact_dynamics<dim>(parameters.contact.dynamics);
   solver =
       std::make_unique<ContactNewtonSolver<dim>>(dof_handler,
                                                  *bodies,
@@ -135,12 +136,10 @@ void Simulation<dim>::setup()
       profile_steps.insert(static_cast<unsigned int>(std::lround(profile_time / dt)));
 
   log << "dyncontact: " << dof_handler.n_dofs() << " displacement DoFs, " << contact->n_pairs()
-      << " contact candidate(s), " << n_steps << " steps of dt = " << dt << ", "
-      << (newmark.scheme() == NewmarkScheme::modified ? "modified" : "classical")
-      << " Newmark (beta = " << newmark.beta() << ", gamma = " << newmark.gamma() << "), "
-      << (parameters.contact.formulation == ContactFormulation::penalty ? "penalty"
-                                                                        : "Lagrange multiplier")
-      << " contact\n";
+      << " contact candidate(s), " << n_steps << " steps of dt = " << dt
+      << ", Newmark (beta = " << newmark.beta() << ", gamma = " << newmark.gamma()
+      << "), contact dynamics " << contact_dynamics_names().name(parameters.contact.dynamics)
+      << ", " << contact_formulation_names().name(parameters.contact.formulation) << " contact\n";
   if (std::abs(n_steps * dt - parameters.time.end_time) > 1e-9 * parameters.time.end_time)
     log << "  note: end time " << parameters.time.end_time
         << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
@@ -389,13 +388,13 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   displacement += increment;
   contact->update_geometry(displacement);
   newmark.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
-  if (newmark.scheme() == NewmarkScheme::modified)
-    contact->apply_rate_correction(
-        newmark,
-        mass,
-        {old_displacement, old_velocity, old_acceleration, displacement, increment},
-        velocity,
-        acceleration);
+  contact_dynamics->correct_rates(
+      newmark.rate_map(),
+      *contact,
+      mass,
+      {old_displacement, old_velocity, old_acceleration, displacement, increment},
+      velocity,
+      acceleration);
   accumulate_impulses(before);
   return report.linear_solves;
 }
@@ -600,9 +599,8 @@ std::string Simulation<dim>::problem_fingerprint() const
        << contact->n_pairs() << " contact candidates, " << model->n_bodies() << " bodies, dt "
        << parameters.time.time_step << ", maximum step cuts " << parameters.time.max_step_cuts
        << ", beta " << newmark.beta() << ", gamma " << newmark.gamma() << ", "
-       << (newmark.scheme() == NewmarkScheme::modified ? "modified" : "classical") << ", "
-       << (parameters.contact.formulation == ContactFormulation::penalty ? "penalty"
-                                                                         : "Lagrange multiplier");
+       << contact_dynamics_names().name(parameters.contact.dynamics) << ", "
+       << contact_formulation_names().name(parameters.contact.formulation);
   return text.str();
 }
 

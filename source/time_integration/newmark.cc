@@ -6,8 +6,7 @@
 namespace dyncontact
 {
 Newmark::Newmark(const TimeIntegrationParameters& parameters)
-    : scheme_value(parameters.scheme), beta_value(parameters.beta), gamma_value(parameters.gamma),
-      dt(parameters.time_step)
+    : beta_value(parameters.beta), gamma_value(parameters.gamma), dt(parameters.time_step)
 {
   Assert(beta_value > 0., ExcMessage("beta > 0 is checked when the parameters are read."));
 }
@@ -23,8 +22,10 @@ void Newmark::predict(const Vector<double>& u_n,
                       const Vector<double>& a_n,
                       Vector<double>& predictor) const
 {
-  predictor = u_n;
-  predictor.add(dt, v_n, dt * dt * (0.5 - beta_value), a_n);
+  const RateMap rates = rate_map();
+  predictor.reinit(u_n.size(), true);
+  for (types::global_dof_index i = 0; i < u_n.size(); ++i)
+    predictor[i] = rates.predicted_displacement(u_n[i], v_n[i], a_n[i]);
 }
 
 void Newmark::update_rates(const Vector<double>& increment,
@@ -33,10 +34,14 @@ void Newmark::update_rates(const Vector<double>& increment,
                            Vector<double>& v_new,
                            Vector<double>& a_new) const
 {
-  a_new = increment;
-  a_new *= inertia_factor();
-  v_new = v_n;
-  v_new.add(dt * (1. - gamma_value), a_n, dt * gamma_value, a_new);
+  const RateMap rates = rate_map();
+  a_new.reinit(increment.size(), true);
+  v_new.reinit(increment.size(), true);
+  for (types::global_dof_index i = 0; i < increment.size(); ++i)
+  {
+    a_new[i] = rates.acceleration(increment[i]);
+    v_new[i] = rates.velocity(v_n[i], a_n[i], a_new[i]);
+  }
 }
 
 double Newmark::algorithmic_energy(const double kinetic_energy,
@@ -48,6 +53,7 @@ double Newmark::algorithmic_energy(const double kinetic_energy,
   return kinetic_energy + strain_energy +
          (beta_value - 0.5 * gamma_value) * dt * dt * acceleration_energy;
 }
+
 double Newmark::stability_limit() const
 {
   return 2. * beta_value < gamma_value ? 1. / std::sqrt(gamma_value / 2. - beta_value)

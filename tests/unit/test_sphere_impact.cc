@@ -23,10 +23,10 @@ namespace
 const std::string coarse_mesh =
     "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3";
 
-std::vector<std::string> linear_elastic(const std::string& scheme)
+std::vector<std::string> linear_elastic(const std::string& dynamics)
 {
   return {coarse_mesh,
-          "Time integration/scheme=" + scheme,
+          "Contact/dynamics=" + dynamics,
           "Bodies/Body 1/material=linear elastic",
           "Bodies/Body 2/material=linear elastic"};
 }
@@ -58,16 +58,17 @@ double pole_velocity_rms(const MeshRun& run)
  * pole elements. The classical run reproduces the paper's defect, so its energy guard is off
  * (those oscillations gain energy; with the guard on, the steps would be cut until they do not).
  */
-const MeshRun& hard_impact(const std::string& scheme)
+const MeshRun& hard_impact(const std::string& dynamics)
 {
   static const MeshRun classical = []
   {
-    auto overrides = linear_elastic("classical");
+    auto overrides = linear_elastic("none");
     overrides.push_back("Guards/energy=false");
     return run_mesh_case("prm/spheres_rho1.prm", overrides);
   }();
-  static const MeshRun modified = run_mesh_case("prm/spheres_rho1.prm", linear_elastic("modified"));
-  return scheme == "classical" ? classical : modified;
+  static const MeshRun modified =
+      run_mesh_case("prm/spheres_rho1.prm", linear_elastic("taylor-papadopoulos"));
+  return dynamics == "none" ? classical : modified;
 }
 
 /** Mid-contact of the soft impact: the step nearest Hertz's peak (t = 2.04098). */
@@ -211,8 +212,8 @@ TEST(SphereImpact, ContactPressureIsHertzianOnTheContactZoneAndZeroOutside)
 TEST(SphereImpact, ModifiedSchemeKeepsTheInterfaceVelocityContinuous)
 {
   // By symmetry the contact poles are at rest while in contact.
-  const MeshRun& classical       = hard_impact("classical");
-  const MeshRun& modified        = hard_impact("modified");
+  const MeshRun& classical       = hard_impact("none");
+  const MeshRun& modified        = hard_impact("taylor-papadopoulos");
   const double classical_rms     = pole_velocity_rms(classical);
   const double modified_rms      = pole_velocity_rms(modified);
   const double classical_ringing = measure(classical).ringing;
@@ -239,9 +240,9 @@ TEST(SphereImpact, ContactZoneGrowsSteadilyUntilThePeak)
   // area, so its multiplier is a near-zero nodal force of either sign. When the sign alone
   // decided its release, it left and rejoined the active set every other step from t = 2.3 on
   // (12, 11, 12, 11 active pairs), dimpling the pole and making the total force zig-zag.
-  for (const std::string scheme : {"classical", "modified"})
+  for (const std::string dynamics : {"none", "taylor-papadopoulos"})
   {
-    const History& history      = hard_impact(scheme).history();
+    const History& history      = hard_impact(dynamics).history();
     const auto force            = history.column("contact_force");
     const auto active           = history.column("active_constraints");
     const unsigned int peak_row = std::max_element(force.begin(), force.end()) - force.begin();
@@ -249,19 +250,20 @@ TEST(SphereImpact, ContactZoneGrowsSteadilyUntilThePeak)
     for (unsigned int row = 1; row <= peak_row; ++row)
       if (active[row] < active[row - 1])
         ++departures;
-    std::cout << scheme << ": active pairs at the peak " << active[peak_row] << ", steps before it "
+    std::cout << dynamics << ": active pairs at the peak " << active[peak_row]
+              << ", steps before it "
               << "with fewer active pairs than the step before " << departures << "\n";
-    EXPECT_EQ(departures, 0u) << scheme;
-    EXPECT_GE(active[peak_row], 10.) << scheme; // measured 12: the rings inside the Hertz radius
+    EXPECT_EQ(departures, 0u) << dynamics;
+    EXPECT_GE(active[peak_row], 10.) << dynamics; // measured 12: the rings inside the Hertz radius
   }
 }
 
 TEST(SphereImpact, PenaltyContactMatchesHertzWithinMeshBands)
 {
   // The penalty formulation (with the classical scheme, see the README) on the coarse mesh.
-  const MeshRun run = run_mesh_case(
-      "prm/spheres_rho0.001.prm",
-      {coarse_mesh, "Time integration/scheme=classical", "Contact/formulation=penalty"});
+  const MeshRun run =
+      run_mesh_case("prm/spheres_rho0.001.prm",
+                    {coarse_mesh, "Contact/dynamics=none", "Contact/formulation=penalty"});
   const HertzImpactOfIdenticalSpheres hertz({8., 5e3, 0.3, 1e-3}, 2., 2.);
   const ImpactMeasures computed    = measure(run);
   const auto penetration           = run.history().column("max_penetration");

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/base/name_table.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
@@ -13,12 +14,18 @@
 
 namespace dyncontact
 {
-/** Which Newmark variant advances velocities and accelerations (paper sections 4 and 5). */
-enum class NewmarkScheme
+/**
+ * The treatment of the contact nodes' rates by the time integration (Contact/dynamics): what the
+ * paper's modified Newmark is one of (sections 4 and 5).
+ */
+enum class ContactDynamicsKind
 {
-  classical, ///< plain Newmark; contact constrains displacements only
-  modified   ///< Taylor & Papadopoulos: also [[v]].n = 0 and [[a]].n = 0 on active pairs
+  none,               ///< classical: contact constrains displacements only
+  taylor_papadopoulos ///< also [[v]].n = 0 and [[a]].n = 0 on active pairs, paper eqs. (19)-(24)
 };
+
+/** The names of Contact/dynamics. */
+const NameTable<ContactDynamicsKind>& contact_dynamics_names();
 
 /** How the contact constraint g >= 0 is enforced. */
 enum class ContactFormulation
@@ -27,10 +34,15 @@ enum class ContactFormulation
   penalty              ///< force eps <-g> along the normal
 };
 
+/** The names of Contact/formulation. */
+const NameTable<ContactFormulation>& contact_formulation_names();
+
 /** Newmark parameters and the time window of a run. Subsection `Time integration`. */
 struct TimeIntegrationParameters
 {
-  NewmarkScheme scheme;
+  /// the deprecated Time integration/scheme (classical | modified), "" if not given; it sets
+  /// Contact/dynamics (ParameterReader resolves it)
+  std::string deprecated_scheme;
   double beta;
   double gamma;
   double time_step;
@@ -52,6 +64,7 @@ struct TimeIntegrationParameters
 struct ContactParameters
 {
   ContactFormulation formulation;
+  ContactDynamicsKind dynamics;
   /// penalty stiffness of a pair = this factor times E A / h of the stiffer side (dimensionless);
   /// with `automatic_penalty` the factor the models start from (quasi_static_penalty_factor),
   /// which Simulation lowers for wave problems
@@ -147,6 +160,9 @@ enum class GeometryKind
   axisymmetric_mesh ///< bodies of revolution from a gmsh mesh, subsections `Mesh` and `Bodies`
 };
 
+/** The names of Problem/geometry. */
+const NameTable<GeometryKind>& geometry_names();
+
 /** Subsection `Problem`. */
 struct ProblemParameters
 {
@@ -203,6 +219,8 @@ struct RunParameters
   MeshParameters mesh;         ///< mesh-based problems only
   BodiesParameters bodies;     ///< mesh-based problems only
   OutputParameters output;
+  /// one line each, for the user: deprecated entries and what replaces them
+  std::vector<std::string> warnings;
 };
 
 /**
@@ -232,8 +250,11 @@ public:
   static void print_documentation(std::ostream& out);
 
 private:
-  /** Checks across subsections (scheme vs formulation). */
-  void check_consistency() const;
+  /**
+   * Resolves the deprecated Time integration/scheme into Contact/dynamics (with a warning) and
+   * checks across subsections (contact dynamics vs formulation).
+   */
+  void resolve_and_check();
 
   std::string input_filename;
   std::string input_text;

@@ -4,7 +4,6 @@
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_pair.h>
 #include <dyncontact/discretization/node_index.h>
-#include <dyncontact/time_integration/newmark.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -19,9 +18,9 @@ template <int dim>
 class NodeToNodeContact;
 
 /**
- * The contact layer: the candidate pairs, their active set and multipliers, their rows in the
- * saddle-point system, and the modified Newmark's rate correction (Taylor & Papadopoulos 1993,
- * section 5).
+ * The contact layer: the candidate pairs, their active set and multipliers, and their rows in the
+ * saddle-point system. The treatment of the contact nodes' rates (the paper's modified Newmark)
+ * is a ContactDynamics, which reads the pairs from here.
  *
  * Every candidate owns one multiplier unknown, so the sparsity pattern never changes; an inactive
  * pair gets the trivial row lambda = 0. The Lagrange multiplier formulation enforces g = 0 on the
@@ -35,7 +34,7 @@ class NodeToNodeContact;
  * them to a configuration; the time loop calls it at every converged (or restored) configuration,
  * and a step's Newton solve keeps those normals (see NodeToNodeContact).
  *
- * It does not choose time steps, assemble elasticity or solve linear systems.
+ * It does not choose time steps, know the integrator, assemble elasticity or solve linear systems.
  */
 template <int dim>
 class ContactConstraints
@@ -112,18 +111,6 @@ public:
                          double force_tolerance);
 
   /**
-   * The modified Newmark correction, the paper's eqs. (21)-(22) and the recovery formulas after
-   * them, with weights equal to the lumped nodal masses (a wall has infinite weight): on every
-   * active pair the normal components of v_{n+1} and a_{n+1} are corrected so that their jumps
-   * vanish. Tangential components and all other nodes keep the classical values.
-   */
-  void apply_rate_correction(const Newmark& newmark,
-                             const Vector<double>& lumped_mass,
-                             const NewmarkStep& step,
-                             Vector<double>& v_new,
-                             Vector<double>& a_new) const;
-
-  /**
    * Total interface force, compression positive, recovered from the equations of motion of the
    * body-A nodes of the active pairs: the sum of -n . (M a + Q(u) - W) at those nodes
    * (`net_internal_force` = Q(u) - W). It equals the sum of the multipliers for the classical
@@ -176,11 +163,6 @@ public:
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
 private:
-  /** Normal component n . f of a nodal vector field at `node`. */
-  double normal_component(const Node<dim>& node,
-                          const Tensor<1, dim>& normal,
-                          const Vector<double>& field) const;
-
   /**
    * n . (M a + Q(u) - W) at `node`: the equation-of-motion balance along n, i.e. minus the contact
    * force on a body-A node and plus that on a body-B node.

@@ -3,6 +3,7 @@
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/discretization/surface_tractions.h>
@@ -198,6 +199,7 @@ private:
   Vector<double> external_force;                           ///< W at the current time
   std::unique_ptr<NodeToNodeContact<dim>> surface_contact; ///< null: fixed-normal pairs only
   std::unique_ptr<ContactConstraints<dim>> contact;
+  std::unique_ptr<ContactDynamics<dim>> contact_dynamics; ///< Contact/dynamics
   std::unique_ptr<ContactNewtonSolver<dim>> solver;
   std::vector<Node<dim>> monitors;
   unsigned int innermost_pair = 0; ///< candidate pair nearest to the axis (centre_pressure)

@@ -2,30 +2,18 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/parameters.h>
+#include <dyncontact/time_integration/rate_map.h>
 
 #include <deal.II/lac/vector.h>
 
 namespace dyncontact
 {
 /**
- * The states of one completed Newmark step, t_n -> t_{n+1}, before the rates at t_{n+1} are
- * corrected: what the modified scheme's contact correction reads.
- */
-struct NewmarkStep
-{
-  const Vector<double>& old_displacement;
-  const Vector<double>& old_velocity;
-  const Vector<double>& old_acceleration;
-  const Vector<double>& new_displacement;
-  const Vector<double>& increment; ///< u_{n+1} - u~, the converged displacement minus the predictor
-};
-
-/**
  * The Newmark (beta, gamma) family, eqs. (11)-(12) of the paper, written displacement-first: the
  * predictor u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, then a_{n+1} = (u_{n+1} - u~)/(beta dt^2)
- * and v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}). It also knows the algorithmic energy
- * weight. The modified scheme's contact correction is not here but in ContactConstraints, which
- * calls back into this class for the coefficients; assembly and solves are not here either.
+ * and v_{n+1} = v_n + dt ((1 - gamma) a_n + gamma a_{n+1}), each formula from RateMap, which is
+ * also all that a contact-dynamics treatment gets of it (rate_map()). It also knows the
+ * algorithmic energy weight and the stability limit; assembly and solves are not here.
  */
 class Newmark
 {
@@ -43,13 +31,15 @@ public:
    * (unconditionally stable).
    */
   double stability_limit() const;
-  NewmarkScheme scheme() const { return scheme_value; }
+
+  /** The per-component relations of the current step size, for contact-dynamics treatments. */
+  RateMap rate_map() const { return {dt, beta_value, gamma_value}; }
 
   /** Sets the step size of the next steps (step control cuts and regrows it), dt > 0. */
   void set_time_step(double time_step);
 
   /** 1 / (beta dt^2): multiplies M (u_{n+1} - u~) in the equation of motion. */
-  double inertia_factor() const { return 1. / (beta_value * dt * dt); }
+  double inertia_factor() const { return rate_map().da_du(); }
 
   /** The predictor u~ from the state at t_n. */
   void predict(const Vector<double>& u_n,
@@ -78,7 +68,6 @@ public:
   algorithmic_energy(double kinetic_energy, double strain_energy, double acceleration_energy) const;
 
 private:
-  NewmarkScheme scheme_value;
   double beta_value;
   double gamma_value;
   double dt;

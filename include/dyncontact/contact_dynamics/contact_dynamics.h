@@ -1,0 +1,43 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/time_integration/rate_map.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+
+namespace dyncontact
+{
+/**
+ * How the time integration treats the rates of the contact nodes: the family of fixes for the
+ * velocity and acceleration jumps that implicit time stepping produces at contact events
+ * (Contact/dynamics). A treatment sees the integrator only through a RateMap and the contact
+ * layer only through its active pairs; adding one is one new file, one line in
+ * create_contact_dynamics() and one entry in contact_dynamics_names().
+ */
+template <int dim>
+class ContactDynamics
+{
+public:
+  virtual ~ContactDynamics() = default;
+
+  /**
+   * After a converged step (classical rates v_new, a_new at every DoF, from the increment of
+   * `step`): corrects the rates of the DoFs of the active pairs of `contact`. `lumped_mass` is per
+   * DoF [mass]; all vectors are whole over the displacement DoFs.
+   */
+  virtual void correct_rates(const RateMap& rates,
+                             const ContactConstraints<dim>& contact,
+                             const Vector<double>& lumped_mass,
+                             const StepStates& step,
+                             Vector<double>& v_new,
+                             Vector<double>& a_new) const = 0;
+};
+
+/** The treatment `kind` of Contact/dynamics. */
+template <int dim>
+std::unique_ptr<ContactDynamics<dim>> create_contact_dynamics(ContactDynamicsKind kind);
+} // namespace dyncontact

@@ -1,0 +1,25 @@
+#pragma once
+
+#include <dyncontact/contact_dynamics/contact_dynamics.h>
+
+namespace dyncontact
+{
+/**
+ * Contact/dynamics = none: classical Newmark, the contact constrains the displacements only and
+ * the rates of the contact nodes keep the classical update, with its velocity and acceleration
+ * jumps across active pairs (the defect the paper describes, section 4).
+ */
+template <int dim>
+class NoRateCorrection : public ContactDynamics<dim>
+{
+public:
+  void correct_rates(const RateMap&,
+                     const ContactConstraints<dim>&,
+                     const Vector<double>&,
+                     const StepStates&,
+                     Vector<double>&,
+                     Vector<double>&) const override
+  {
+  }
+};
+} // namespace dyncontact

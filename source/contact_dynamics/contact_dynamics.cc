@@ -1,0 +1,22 @@
+#include <dyncontact/contact_dynamics/contact_dynamics.h>
+#include <dyncontact/contact_dynamics/no_rate_correction.h>
+#include <dyncontact/contact_dynamics/taylor_papadopoulos.h>
+
+namespace dyncontact
+{
+template <int dim>
+std::unique_ptr<ContactDynamics<dim>> create_contact_dynamics(const ContactDynamicsKind kind)
+{
+  switch (kind)
+  {
+  case ContactDynamicsKind::none:
+    return std::make_unique<NoRateCorrection<dim>>();
+  case ContactDynamicsKind::taylor_papadopoulos:
+    return std::make_unique<TaylorPapadopoulos<dim>>();
+  }
+  throw std::logic_error("create_contact_dynamics: a ContactDynamicsKind without a treatment");
+}
+
+template std::unique_ptr<ContactDynamics<1>> create_contact_dynamics<1>(ContactDynamicsKind);
+template std::unique_ptr<ContactDynamics<2>> create_contact_dynamics<2>(ContactDynamicsKind);
+} // namespace dyncontact

@@ -1,0 +1,169 @@
+// Unit tests of the contact-dynamics treatments on two masses, apart from any mesh or solver: the
+// paper's rate correction (Taylor & Papadopoulos 1993, eqs. 21-22) must leave no normal velocity
+// or acceleration jump across an active pair and conserve linear momentum, which together fix the
+// corrected normal rates of both nodes to the mass-weighted means of the classical ones: an
+// independent reference computed here from the classical rates alone. Unequal masses (1 and 3)
+// catch a correction that weights both sides alike, and gamma = 0.6, beta = 0.3 one that uses the
+// trapezoidal coefficients.
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact_dynamics/contact_dynamics.h>
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace dyncontact::testing
+{
+namespace
+{
+/**
+ * One step of two point masses (or one against a wall) meeting along `normal`: the old state, the
+ * converged new displacement with the pair closed, the predictor increment and the classical
+ * rates. In 2D the tangential components differ between the nodes, which the correction must
+ * keep.
+ */
+template <int dim>
+struct TwoMassStep
+{
+  TwoMassStep(const Tensor<1, dim>& normal, const bool against_wall)
+      : rates{0.1, 0.3, 0.6}, mass(2 * dim), old_u(2 * dim), old_v(2 * dim), old_a(2 * dim),
+        new_u(2 * dim), increment(2 * dim), v(2 * dim), a(2 * dim)
+  {
+    ContactPair<dim> pair;
+    pair.node_a = {0, Point<dim>(), {}};
+    for (unsigned int d = 0; d < dim; ++d)
+      pair.node_a.dofs[d] = d;
+    if (against_wall)
+      pair.wall_point = Point<dim>() + 0.05 * normal;
+    else
+    {
+      Node<dim> node_b{1, Point<dim>(), {}};
+      for (unsigned int d = 0; d < dim; ++d)
+        node_b.dofs[d] = dim + d;
+      pair.node_b = node_b;
+    }
+    pair.normal            = normal;
+    pair.penalty_stiffness = 0.;
+    contact = std::make_unique<ContactConstraints<dim>>(std::vector<ContactPair<dim>>{pair},
+                                                        ContactFormulation::lagrange_multiplier);
+    for (unsigned int i = 0; i < 2 * dim; ++i)
+    {
+      mass[i]  = i < dim ? 1. : 3.;
+      old_v[i] = i < dim ? 2. - 0.3 * i : -1. + 0.2 * i;
+      old_a[i] = i < dim ? 0.5 + 0.1 * i : -0.2 - 0.4 * i;
+    }
+    // Closed at t_{n+1}: both nodes at 0.05 n (the wall's position), tangentially apart.
+    for (unsigned int d = 0; d < dim; ++d)
+      new_u[d] = new_u[dim + d] = 0.05 * normal[d];
+    if constexpr (dim == 2)
+    {
+      const Tensor<1, dim> tangent = cross_product_2d(normal);
+      for (unsigned int d = 0; d < dim; ++d)
+      {
+        new_u[d]       = 0.05 * normal[d] + 0.02 * tangent[d];
+        new_u[dim + d] = 0.05 * normal[d] - 0.01 * tangent[d];
+      }
+    }
+    Vector<double> penetrating(2 * dim);
+    for (unsigned int d = 0; d < dim; ++d)
+      penetrating[d] = 0.2 * normal[d];
+    contact->update_active_set(penetrating, 1e-12, 0.);
+    for (unsigned int i = 0; i < 2 * dim; ++i)
+    {
+      increment[i] = new_u[i] - rates.predicted_displacement(old_u[i], old_v[i], old_a[i]);
+      a[i]         = rates.acceleration(increment[i]);
+      v[i]         = rates.velocity(old_v[i], old_a[i], a[i]);
+    }
+  }
+
+  /** n . f at node 0 (A) or 1 (B). */
+  double normal_part(const Vector<double>& field, const unsigned int node, const Tensor<1, dim>& n)
+  {
+    double value = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      value += n[d] * field[node * dim + d];
+    return value;
+  }
+
+  void correct(const ContactDynamicsKind kind)
+  {
+    create_contact_dynamics<dim>(kind)->correct_rates(
+        rates, *contact, mass, {old_u, old_v, old_a, new_u, increment}, v, a);
+  }
+
+  RateMap rates;
+  std::unique_ptr<ContactConstraints<dim>> contact;
+  Vector<double> mass, old_u, old_v, old_a, new_u, increment, v, a;
+};
+
+/**
+ * The corrected normal rates of both nodes equal the mass-weighted means of the classical ones
+ * (relative 1e-13: a few roundings of numbers of order 10); tangential components unchanged
+ * (exactly up to the normal's rounding, 1e-14).
+ */
+template <int dim>
+void expect_mean_normal_rates(const Tensor<1, dim>& normal)
+{
+  TwoMassStep<dim> step(normal, false);
+  ASSERT_TRUE(step.contact->is_active(0));
+  const Vector<double> classical_v = step.v, classical_a = step.a;
+  step.correct(ContactDynamicsKind::taylor_papadopoulos);
+  for (const auto& [corrected, classical] :
+       {std::pair(&step.v, &classical_v), std::pair(&step.a, &classical_a)})
+  {
+    const double mean = (1. * step.normal_part(*classical, 0, normal) +
+                         3. * step.normal_part(*classical, 1, normal)) /
+                        4.;
+    const double scale = std::abs(step.normal_part(*classical, 0, normal)) + std::abs(mean);
+    EXPECT_NEAR(step.normal_part(*corrected, 0, normal), mean, 1e-13 * scale);
+    EXPECT_NEAR(step.normal_part(*corrected, 1, normal), mean, 1e-13 * scale);
+    for (unsigned int i = 0; i < 2 * dim; ++i)
+    {
+      // The change is along n only.
+      const unsigned int node = i / dim, d = i % dim;
+      const double shift =
+          step.normal_part(*corrected, node, normal) - step.normal_part(*classical, node, normal);
+      EXPECT_NEAR((*corrected)[i], (*classical)[i] + shift * normal[d], 1e-14 * (1. + scale));
+    }
+  }
+}
+} // namespace
+
+TEST(ContactDynamics, TaylorPapadopoulosGivesBothNodesTheMassWeightedMeanNormalRates1D)
+{
+  expect_mean_normal_rates<1>(Tensor<1, 1>({1.}));
+}
+
+TEST(ContactDynamics, TaylorPapadopoulosGivesBothNodesTheMassWeightedMeanNormalRates2D)
+{
+  // An oblique normal: the correction acts along it and keeps the tangential rates.
+  expect_mean_normal_rates<2>(Tensor<1, 2>({0.6, 0.8}));
+}
+
+// Against a rigid wall (infinite weight) the corrected normal rates of the node are the wall's,
+// zero; the classical ones are not (that is the defect the correction removes).
+TEST(ContactDynamics, TaylorPapadopoulosStopsANodeAgainstAWall)
+{
+  const Tensor<1, 2> normal({0.6, 0.8});
+  TwoMassStep<2> step(normal, true);
+  ASSERT_TRUE(step.contact->is_active(0));
+  EXPECT_GT(std::abs(step.normal_part(step.v, 0, normal)), 0.1);
+  EXPECT_GT(std::abs(step.normal_part(step.a, 0, normal)), 0.1);
+  step.correct(ContactDynamicsKind::taylor_papadopoulos);
+  EXPECT_NEAR(step.normal_part(step.v, 0, normal), 0., 1e-13);
+  EXPECT_NEAR(step.normal_part(step.a, 0, normal), 0., 1e-12);
+}
+
+// Contact/dynamics = none keeps the classical rates, jumps included.
+TEST(ContactDynamics, NoneKeepsTheClassicalRates)
+{
+  TwoMassStep<1> step(Tensor<1, 1>({1.}), false);
+  const Vector<double> classical_v = step.v, classical_a = step.a;
+  step.correct(ContactDynamicsKind::none);
+  for (unsigned int i = 0; i < 2; ++i)
+  {
+    EXPECT_EQ(step.v[i], classical_v[i]);
+    EXPECT_EQ(step.a[i], classical_a[i]);
+  }
+  EXPECT_GT(std::abs(step.v[1] - step.v[0]), 0.1); // the jump the paper's correction removes
+}
+} // namespace dyncontact::testing
