@@ -103,34 +103,40 @@ std::vector<Tensor<1, dim>> ContactSurface<dim>::normals(const Vector<double>& d
 template <int dim>
 std::vector<double> ContactSurface<dim>::lumped_areas(const Vector<double>& displacement) const
 {
-  const Eigen::MatrixXd mass = mass_matrix(displacement);
+  const Eigen::SparseMatrix<double> mass = mass_matrix(displacement);
   // The shape functions sum to one, so the row sums of the mass matrix are the consistent nodal
   // areas, and their sum is the surface's area.
-  const double scale = mass.sum() / mass.diagonal().sum();
+  const Eigen::VectorXd diagonal = mass.diagonal();
+  const double scale             = mass.sum() / diagonal.sum();
   std::vector<double> areas(surface_nodes.size());
   for (unsigned int node = 0; node < areas.size(); ++node)
-    areas[node] = scale * mass(node, node);
+    areas[node] = scale * diagonal(node);
   return areas;
 }
 
 template <int dim>
-Eigen::MatrixXd ContactSurface<dim>::mass_matrix(const Vector<double>& displacement) const
+Eigen::SparseMatrix<double>
+ContactSurface<dim>::mass_matrix(const Vector<double>& displacement) const
 {
   const MappingQEulerian<dim, Vector<double>> current_mapping(
       dof_handler.get_fe().degree, dof_handler, displacement);
-  Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(surface_nodes.size(), surface_nodes.size());
+  std::vector<Eigen::Triplet<double>> entries; // summed by setFromTriplets
   integrate_over_faces(current_mapping,
-                       [&mass](const auto& face_nodes,
-                               const FEFaceValues<dim>& values,
-                               const unsigned int q,
-                               const double measure)
+                       [&entries](const auto& face_nodes,
+                                  const FEFaceValues<dim>& values,
+                                  const unsigned int q,
+                                  const double measure)
                        {
                          for (const auto& [dof_i, node_i] : face_nodes)
                            for (const auto& [dof_j, node_j] : face_nodes)
-                             mass(node_i, node_j) += values.shape_value_component(dof_i, q, 0) *
-                                                     values.shape_value_component(dof_j, q, 0) *
-                                                     measure;
+                             entries.emplace_back(node_i,
+                                                  node_j,
+                                                  values.shape_value_component(dof_i, q, 0) *
+                                                      values.shape_value_component(dof_j, q, 0) *
+                                                      measure);
                        });
+  Eigen::SparseMatrix<double> mass(surface_nodes.size(), surface_nodes.size());
+  mass.setFromTriplets(entries.begin(), entries.end());
   return mass;
 }
 

@@ -1,5 +1,6 @@
 #include <dyncontact/contact/node_to_node_contact.h>
 
+#include <Eigen/SparseCholesky>
 #include <limits>
 #include <sstream>
 
@@ -123,17 +124,27 @@ NodeToNodeContact<dim>::contact_pressures(const Vector<double>& displacement,
   if (zone.empty())
     return pressures;
 
-  const Eigen::MatrixXd mass = surface_a.mass_matrix(displacement);
-  Eigen::MatrixXd zone_mass(zone.size(), zone.size());
+  // The surface mass matrix restricted to the zone's nodes, kept sparse.
+  const Eigen::SparseMatrix<double> mass = surface_a.mass_matrix(displacement);
+  std::vector<int> zone_index(mass.rows(), -1); // surface node -> row in the zone, or -1
   Eigen::VectorXd zone_forces(zone.size());
   for (unsigned int i = 0; i < zone.size(); ++i)
   {
-    zone_forces(i) = multipliers[zone[i]];
-    for (unsigned int j = 0; j < zone.size(); ++j)
-      zone_mass(i, j) =
-          mass(surface_nodes_of_pair[zone[i]].first, surface_nodes_of_pair[zone[j]].first);
+    zone_index[surface_nodes_of_pair[zone[i]].first] = i;
+    zone_forces(i)                                   = multipliers[zone[i]];
   }
-  const Eigen::VectorXd zone_pressures = zone_mass.ldlt().solve(zone_forces);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int column = 0; column < mass.outerSize(); ++column)
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(mass, column); entry; ++entry)
+      if (zone_index[entry.row()] >= 0 && zone_index[entry.col()] >= 0)
+        entries.emplace_back(zone_index[entry.row()], zone_index[entry.col()], entry.value());
+  Eigen::SparseMatrix<double> zone_mass(zone.size(), zone.size());
+  zone_mass.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(zone_mass);
+  if (factorization.info() != Eigen::Success)
+    throw SolverFailure("the contact pressure recovery failed: the surface mass matrix of the "
+                        "contact zone is not positive definite (a collapsed contact face?)");
+  const Eigen::VectorXd zone_pressures = factorization.solve(zone_forces);
   for (unsigned int i = 0; i < zone.size(); ++i)
     pressures[zone[i]] = zone_pressures(i);
   return pressures;

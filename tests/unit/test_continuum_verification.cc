@@ -51,6 +51,8 @@
 #include <string>
 #include <vector>
 
+#include "simpson.h"
+
 using dealii::ComponentMask;
 using dealii::DoFHandler;
 using dealii::DynamicSparsityPattern;
@@ -840,4 +842,55 @@ TEST(ManufacturedAxisymmetricSolution, ConvergesAtOptimalRates)
   const double h1_rate    = convergence_rate(h1_errors, last);
   EXPECT_GE(l2_rate, 2.8);
   EXPECT_GE(h1_rate, 1.8);
+}
+
+// The HRZ lumped mass of one off-axis axisymmetric Q2 cell, node by node: m_i = M_ii * m / sum_j
+// M_jj with the consistent diagonal M_ii = rho * integral of N_i^2 2 pi r dA and the cell's mass
+// m = rho * integral of 2 pi r dA (Hinton, Rock & Zienkiewicz 1976). On the rectangle [1, 1.5] x
+// [0.5, 0.9] N_i = L_a(r) L_b(z), so M_ii = 2 pi (integral of L_a^2 r dr)(integral of L_b^2 dz),
+// integrated here by Simpson's rule on 400 intervals (its error, of order h^4 on degree-5
+// integrands, is below 1e-12 relative). Keeping only the cell total right is not enough: moving
+// mass among the nodes (e.g. dropping the 2 pi r weight inside the shares, which makes the two
+// radial columns equal) misses these values by several percent. Bound 1e-10 relative.
+TEST(LumpedMass, OffAxisQ2CellHasTheHrzNodalMasses)
+{
+  const double r0 = 1., r1 = 1.5, z0 = 0.5, z1 = 0.9;
+  const Q2Model<2> model(distorted_box(Point<2>(r0, z0), Point<2>(r1, z1), 1));
+  const AxisymmetricKinematics kinematics;
+  const Vector<double> mass = make_bodies(model, kinematics, "linear elastic").lumped_mass();
+
+  // Quadratic Lagrange polynomials on [a, b] with nodes a, (a + b) / 2, b, as functions of the
+  // coordinate; `node` is the node's coordinate.
+  const auto lagrange = [](const double a, const double b, const double node, const double x)
+  {
+    const double m = 0.5 * (a + b);
+    if (std::abs(node - a) < 1e-12)
+      return (x - m) * (x - b) / ((a - m) * (a - b));
+    if (std::abs(node - m) < 1e-12)
+      return (x - a) * (x - b) / ((m - a) * (m - b));
+    return (x - a) * (x - m) / ((b - a) * (b - m));
+  };
+  const auto diagonal = [&](const Point<2>& node)
+  {
+    const double radial = dyncontact::testing::simpson(
+        r1 - r0,
+        400,
+        [&](const double s) { return std::pow(lagrange(r0, r1, node[0], r0 + s), 2) * (r0 + s); });
+    const double axial = dyncontact::testing::simpson(
+        z1 - z0,
+        400,
+        [&](const double s) { return std::pow(lagrange(z0, z1, node[1], z0 + s), 2); });
+    return 2. * pi * radial * axial;
+  };
+  std::vector<Point<2>> support_points(model.n_dofs());
+  dof_tools::map_dofs_to_support_points(model.mapping, model.dof_handler, support_points);
+  double diagonal_sum = 0.;
+  for (const auto& point : support_points)
+    diagonal_sum += diagonal(point) / 2.;                        // each node has two DoFs
+  const double cell_mass = pi * (r1 * r1 - r0 * r0) * (z1 - z0); // density 1
+  for (global_dof_index dof = 0; dof < model.n_dofs(); ++dof)
+  {
+    const double expected = diagonal(support_points[dof]) * cell_mass / diagonal_sum;
+    EXPECT_NEAR(mass[dof], expected, 1e-10 * expected) << "node " << support_points[dof];
+  }
 }

@@ -9,7 +9,7 @@
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
 
-#include <Eigen/Dense>
+#include <Eigen/SparseCore>
 #include <vector>
 
 namespace dyncontact
@@ -70,9 +70,11 @@ public:
    * the current faces, i, j indices into nodes(): symmetric positive definite. Solving M p = f
    * turns nodal forces f into the pressure field p they are consistent with, also at nodes whose
    * tributary area vanishes (a Q2 vertex on the axis of an axisymmetric model has area zero: the
-   * integral of N_i 2 pi r over its face is zero for a straight face).
+   * integral of N_i 2 pi r over its face is zero for a straight face). Sparse: a node couples only
+   * to the nodes of its faces, so the storage grows with the number of surface nodes, not with
+   * its square (a dense matrix of a 3D contact surface would need GBs).
    */
-  Eigen::MatrixXd mass_matrix(const Vector<double>& displacement) const;
+  Eigen::SparseMatrix<double> mass_matrix(const Vector<double>& displacement) const;
 
 private:
   const DoFHandler<dim>& dof_handler;
