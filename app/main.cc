@@ -56,6 +56,73 @@ void print_warnings(const dyncontact::RunParameters& parameters)
     for (const std::string& warning : parameters.warnings)
       std::cout << "WARNING: " << warning << "\n";
 }
+/** --validate: everything a run checks before its first step, writing nothing. */
+void validate(const dyncontact::CommandLine& command_line)
+{
+  using namespace dyncontact;
+  const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+  print_warnings(reader.parameters());
+  check_run_setup(reader.parameters());
+  if (!command_line.resume_directory.empty())
+    check_checkpoint_exists(command_line.resume_directory);
+  std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
+}
+
+/**
+ * Prepares the output directory on rank 0 (a fresh run owns it: an earlier run's results are
+ * removed; a resumed run continues the interrupted one's) and writes the parameter records.
+ */
+void prepare_run_directory(const dyncontact::ParameterReader& reader, const std::string& resume)
+{
+  using namespace dyncontact;
+  on_root_rank(
+      [&]
+      {
+        const std::string& directory = reader.parameters().output.directory;
+        if (!resume.empty())
+        {
+          check_checkpoint_exists(resume);
+          return;
+        }
+        prepare_output_directory(directory);
+        const unsigned int n_removed = remove_previous_results(directory);
+        if (n_removed > 0)
+          std::cout << "dyncontact: removed " << n_removed << " result file"
+                    << (n_removed > 1 ? "s" : "") << " of an earlier run from " << directory
+                    << "\n";
+        reader.write_records(directory);
+      });
+}
+
+/** Runs the simulation of `model` in `dim` dimensions. */
+template <int dim>
+void simulate(const dyncontact::RunParameters& parameters,
+              std::unique_ptr<dyncontact::ProblemModel<dim>> model,
+              const dyncontact::CommandLine& command_line)
+{
+  dyncontact::Simulation<dim> simulation(parameters, std::move(model), std::cout);
+  simulation.set_progress(!command_line.quiet);
+  simulation.run(command_line.resume_directory);
+}
+
+/** A run of the parameter file, or the resumption of an interrupted one. */
+void run(const dyncontact::CommandLine& command_line)
+{
+  using namespace dyncontact;
+  const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+  const RunParameters& parameters = reader.parameters();
+  print_warnings(parameters);
+  prepare_run_directory(reader, command_line.resume_directory);
+  if (parameters.problem.geometry == GeometryKind::bars)
+    simulate<1>(parameters,
+                std::make_unique<BarModel>(parameters.geometry, parameters.contact),
+                command_line);
+  else
+    simulate<2>(parameters,
+                std::make_unique<AxisymmetricMeshModel>(
+                    parameters.mesh, parameters.bodies, parameters.contact),
+                command_line);
+}
 } // namespace
 
 int main(int argc, char** argv)
@@ -78,59 +145,11 @@ int main(int argc, char** argv)
       ParameterReader::print_documentation(std::cout);
       return 0;
     case CommandLine::Action::validate:
-    {
-      const ParameterReader reader(command_line.parameter_file, command_line.overrides);
-      print_warnings(reader.parameters());
-      check_run_setup(reader.parameters());
-      if (!command_line.resume_directory.empty())
-        check_checkpoint_exists(command_line.resume_directory);
-      std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
+      validate(command_line);
       return 0;
-    }
     case CommandLine::Action::run:
-    {
-      const ParameterReader reader(command_line.parameter_file, command_line.overrides);
-      const RunParameters& parameters = reader.parameters();
-      const std::string& resume       = command_line.resume_directory;
-      print_warnings(parameters);
-      on_root_rank(
-          [&]
-          {
-            const std::string& directory = parameters.output.directory;
-            if (!resume.empty())
-            {
-              check_checkpoint_exists(resume);
-              return; // the interrupted run's results stay; the resumed run continues them
-            }
-            prepare_output_directory(directory);
-            // The run owns its directory: no result of an earlier run may pass for one of it.
-            const unsigned int n_removed = remove_previous_results(directory);
-            if (n_removed > 0)
-              std::cout << "dyncontact: removed " << n_removed << " result file"
-                        << (n_removed > 1 ? "s" : "") << " of an earlier run from " << directory
-                        << "\n";
-            reader.write_records(directory);
-          });
-      if (parameters.problem.geometry == GeometryKind::bars)
-      {
-        Simulation<1> simulation(
-            parameters,
-            std::make_unique<BarModel>(parameters.geometry, parameters.contact),
-            std::cout);
-        simulation.set_progress(!command_line.quiet);
-        simulation.run(resume);
-      }
-      else
-      {
-        Simulation<2> simulation(parameters,
-                                 std::make_unique<AxisymmetricMeshModel>(
-                                     parameters.mesh, parameters.bodies, parameters.contact),
-                                 std::cout);
-        simulation.set_progress(!command_line.quiet);
-        simulation.run(resume);
-      }
+      run(command_line);
       return 0;
-    }
     }
   }
   catch (const InputError& error)

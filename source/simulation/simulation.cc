@@ -697,7 +697,7 @@ void Simulation<dim>::prepare()
 }
 
 template <int dim>
-void Simulation<dim>::run(const std::string& resume_directory)
+void Simulation<dim>::start(const std::string& resume_directory)
 {
   prepare();
   const std::string& directory = parameters.output.directory;
@@ -705,8 +705,8 @@ void Simulation<dim>::run(const std::string& resume_directory)
   if (dim == 2 && is_root_rank)
     field_output->write_cell_outlines(nodes->nodes());
 
-  const double dt = parameters.time.time_step;
-  controller      = std::make_unique<StepController>(dt, n_steps, parameters.time.max_step_cuts);
+  controller = std::make_unique<StepController>(
+      parameters.time.time_step, n_steps, parameters.time.max_step_cuts);
   const Measures initial = measure();
   guarded_energy         = initial.algorithmic_energy;
   accepted_measures      = initial;
@@ -725,109 +725,119 @@ void Simulation<dim>::run(const std::string& resume_directory)
     log << "dyncontact: resumed from " << resume_directory << "/checkpoint.bin at t = " << time
         << "\n";
   }
+  progress.wall_start     = std::chrono::steady_clock::now();
+  progress.last_report    = progress.wall_start;
+  progress.steps_this_run = 0;
+  progress.start_fraction = time / (n_steps * parameters.time.time_step);
+}
 
-  const auto wall_start       = std::chrono::steady_clock::now();
-  auto last_progress          = wall_start;
-  unsigned int steps_this_run = 0;
-  const double start_fraction = time / (n_steps * dt); // of the run, done before this one started
-  while (!controller->finished())
+template <int dim>
+unsigned int
+Simulation<dim>::solve_step(const State& before, Measures& measures, unsigned int& cuts)
+{
+  unsigned int linear_solves = 0;
+  for (cuts = 0;; ++cuts)
   {
-    const State before              = current_state();
-    const unsigned int nominal_step = controller->nominal_step();
-    unsigned int linear_solves = 0, cuts = 0;
+    newmark.set_time_step(controller->step_size());
+    time = controller->end_time();
     std::string failure;
-    Measures measures;
-    for (;;)
+    try
     {
-      newmark.set_time_step(controller->step_size());
-      time    = controller->end_time();
-      failure = "";
-      try
+      linear_solves += do_time_step(before);
+      measures                          = measure();
+      const StepGuards::Figures figures = guard_figures(measures);
+      failure                           = guards.check(figures);
+      if (failure.empty())
       {
-        linear_solves += do_time_step(before);
-        measures                          = measure();
-        const StepGuards::Figures figures = guard_figures(measures);
-        failure                           = guards.check(figures);
-        if (failure.empty())
-        {
-          guards.accept(figures);
-          guarded_energy    = figures.energy;
-          accepted_measures = measures;
-          break;
-        }
+        guards.accept(figures);
+        guarded_energy    = figures.energy;
+        accepted_measures = measures;
+        return linear_solves;
       }
-      catch (const SolverFailure& solver_failure)
-      {
-        failure = solver_failure.what();
-      }
-      restore(before);
-      while (!failure.empty() && (failure.back() == '.' || failure.back() == ' '))
-        failure.pop_back();
-      const double failed_size = controller->step_size();
-      if (!controller->cut())
-      {
-        write_reference_and_summary();
-        throw SolverFailure("step " + std::to_string(nominal_step) +
-                            " (t = " + format_number(time) + "): " + failure +
-                            ", still at the smallest step " + format_number(failed_size) +
-                            " (dt / 2^" + std::to_string(parameters.time.max_step_cuts) +
-                            ", Time integration/maximum step cuts). Results up to t = " +
-                            format_number(controller->start_time()) + " are in " + directory + ".");
-      }
-      ++cuts;
-      ++counters.total_cuts;
-      if (counters.cut_places.size() < 10)
-        counters.cut_places.push_back(format_number(controller->start_time()));
-      log << "  step " << nominal_step << " (t = " << time << "): " << failure
-          << "; cutting the step to " << controller->step_size() << "\n";
     }
-    const auto active_before =
-        std::count(before.contact.active.begin(), before.contact.active.end(), true);
-    const bool nominal_time_reached = controller->accept();
-    ++counters.steps_taken;
-    ++steps_this_run;
-    counters.total_solves += linear_solves;
-    record_step(measures, nominal_time_reached ? nominal_step : 0, linear_solves, cuts);
-    // Every rank stops at the same step, whichever received the signal.
-    const int signal            = Utilities::MPI::max(interrupt_signal(), MPI_COMM_WORLD);
-    const unsigned int interval = parameters.output.checkpoint_interval;
-    if ((signal != 0 && !controller->finished()) ||
-        (interval > 0 && nominal_time_reached && nominal_step % interval == 0))
-      write_checkpoint();
-    if (signal != 0 && !controller->finished())
+    catch (const SolverFailure& solver_failure)
     {
-      write_reference_and_summary();
-      throw RunInterrupted("signal " + std::to_string(signal) + " at t = " + format_number(time) +
-                               ": checkpoint written to " + directory + "/checkpoint.bin",
-                           signal,
-                           directory);
+      failure = solver_failure.what();
     }
-
-    const auto now              = std::chrono::steady_clock::now();
-    const double since_progress = std::chrono::duration<double>(now - last_progress).count();
-    if (show_progress && (static_cast<long>(contact->n_active()) != active_before ||
-                          since_progress >= progress_interval || controller->finished()))
-    {
-      last_progress              = now;
-      const double elapsed       = std::chrono::duration<double>(now - wall_start).count();
-      const double done          = time / (n_steps * dt);
-      const double done_this_run = std::max(done - start_fraction, 1e-9);
-      log << "  step " << std::setw(6) << nominal_step << "/" << n_steps
-          << "  t = " << std::setw(10) << time << "  " << std::fixed << std::setprecision(1)
-          << std::setw(5) << 100. * done << "%  " << std::setw(7)
-          << steps_this_run / std::max(elapsed, 1e-9) << " steps/s  ETA " << std::setw(6)
-          << elapsed * (1. - done) / done_this_run << " s  " << std::setprecision(2)
-          << static_cast<double>(counters.total_solves) / counters.steps_taken << " solves/step"
-          << std::defaultfloat << std::setprecision(6) << "  active pairs " << contact->n_active()
-          << "  energy " << step_history.value(step_history.n_rows() - 1, "algorithmic_energy")
-          << "\n";
-    }
+    restore(before);
+    cut_after_failure(failure);
   }
+}
+
+template <int dim>
+void Simulation<dim>::cut_after_failure(std::string failure)
+{
+  while (!failure.empty() && (failure.back() == '.' || failure.back() == ' '))
+    failure.pop_back();
+  const double failed_size = controller->step_size();
+  if (!controller->cut())
+  {
+    write_reference_and_summary();
+    throw SolverFailure(
+        "step " + std::to_string(controller->nominal_step()) + " (t = " + format_number(time) +
+        "): " + failure + ", still at the smallest step " + format_number(failed_size) +
+        " (dt / 2^" + std::to_string(parameters.time.max_step_cuts) +
+        ", Time integration/maximum step cuts). Results up to t = " +
+        format_number(controller->start_time()) + " are in " + parameters.output.directory + ".");
+  }
+  ++counters.total_cuts;
+  if (counters.cut_places.size() < 10)
+    counters.cut_places.push_back(format_number(controller->start_time()));
+  log << "  step " << controller->nominal_step() << " (t = " << time << "): " << failure
+      << "; cutting the step to " << controller->step_size() << "\n";
+}
+
+template <int dim>
+void Simulation<dim>::checkpoint_or_stop(const bool nominal_time_reached,
+                                         const unsigned int nominal_step)
+{
+  // Every rank stops at the same step, whichever received the signal.
+  const int signal            = Utilities::MPI::max(interrupt_signal(), MPI_COMM_WORLD);
+  const bool stop             = signal != 0 && !controller->finished();
+  const unsigned int interval = parameters.output.checkpoint_interval;
+  if (stop || (interval > 0 && nominal_time_reached && nominal_step % interval == 0))
+    write_checkpoint();
+  if (stop)
+  {
+    write_reference_and_summary();
+    throw RunInterrupted("signal " + std::to_string(signal) + " at t = " + format_number(time) +
+                             ": checkpoint written to " + parameters.output.directory +
+                             "/checkpoint.bin",
+                         signal,
+                         parameters.output.directory);
+  }
+}
+
+template <int dim>
+void Simulation<dim>::report_progress(const unsigned int nominal_step,
+                                      const bool active_set_changed)
+{
+  const auto now              = std::chrono::steady_clock::now();
+  const double since_progress = std::chrono::duration<double>(now - progress.last_report).count();
+  if (!show_progress ||
+      !(active_set_changed || since_progress >= progress_interval || controller->finished()))
+    return;
+  progress.last_report       = now;
+  const double elapsed       = std::chrono::duration<double>(now - progress.wall_start).count();
+  const double done          = time / (n_steps * parameters.time.time_step);
+  const double done_this_run = std::max(done - progress.start_fraction, 1e-9);
+  log << "  step " << std::setw(6) << nominal_step << "/" << n_steps << "  t = " << std::setw(10)
+      << time << "  " << std::fixed << std::setprecision(1) << std::setw(5) << 100. * done << "%  "
+      << std::setw(7) << progress.steps_this_run / std::max(elapsed, 1e-9) << " steps/s  ETA "
+      << std::setw(6) << elapsed * (1. - done) / done_this_run << " s  " << std::setprecision(2)
+      << static_cast<double>(counters.total_solves) / counters.steps_taken << " solves/step"
+      << std::defaultfloat << std::setprecision(6) << "  active pairs " << contact->n_active()
+      << "  energy " << step_history.value(step_history.n_rows() - 1, "algorithmic_energy") << "\n";
+}
+
+template <int dim>
+void Simulation<dim>::finish()
+{
   write_reference_and_summary();
   for (const auto& warning : guards.warnings())
     log << warning << "\n";
   const double wall_time =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - progress.wall_start).count();
   log << "dyncontact: done, " << n_steps << " steps (" << counters.steps_taken << " taken, "
       << counters.total_cuts << " step cuts";
   for (unsigned int c = 0; c < counters.cut_places.size(); ++c)
@@ -838,7 +848,31 @@ void Simulation<dim>::run(const std::string& resume_directory)
   const auto phases = timer.get_summary_data(TimerOutput::total_wall_time);
   for (auto phase = phases.begin(); phase != phases.end(); ++phase)
     log << (phase == phases.begin() ? "" : ", ") << phase->first << " " << phase->second << " s";
-  log << "). Results in " << directory << "\n";
+  log << "). Results in " << parameters.output.directory << "\n";
+}
+
+template <int dim>
+void Simulation<dim>::run(const std::string& resume_directory)
+{
+  start(resume_directory);
+  while (!controller->finished())
+  {
+    const State before              = current_state();
+    const unsigned int nominal_step = controller->nominal_step();
+    Measures measures;
+    unsigned int cuts                = 0;
+    const unsigned int linear_solves = solve_step(before, measures, cuts);
+    const bool nominal_time_reached  = controller->accept();
+    ++counters.steps_taken;
+    ++progress.steps_this_run;
+    counters.total_solves += linear_solves;
+    record_step(measures, nominal_time_reached ? nominal_step : 0, linear_solves, cuts);
+    checkpoint_or_stop(nominal_time_reached, nominal_step);
+    const auto active_before =
+        std::count(before.contact.active.begin(), before.contact.active.end(), true);
+    report_progress(nominal_step, static_cast<long>(contact->n_active()) != active_before);
+  }
+  finish();
 }
 
 template class Simulation<1>;

@@ -23,6 +23,7 @@ if(SIGNAL_ROW)
   execute_process(COMMAND ${SIGNALLER} ${DIRECTORY}/interrupted/history.csv ${SIGNAL_ROW} ${launch}
                           ${EXECUTABLE} ${options} --output ${DIRECTORY}/interrupted
                   RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
+  set(interrupted_error "${error}")
   if(result EQUAL 0)
     message(FATAL_ERROR "the run finished before its history reached row ${SIGNAL_ROW}")
   endif()
@@ -45,7 +46,23 @@ endif()
 execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${DIRECTORY}/uninterrupted/history.csv
                         ${DIRECTORY}/interrupted/history.csv RESULT_VARIABLE differ)
 if(NOT differ EQUAL 0)
-  message(FATAL_ERROR "history.csv of the resumed run differs from the uninterrupted run's")
+  file(STRINGS ${DIRECTORY}/uninterrupted/history.csv expected_rows)
+  file(STRINGS ${DIRECTORY}/interrupted/history.csv resumed_rows)
+  list(LENGTH expected_rows n_expected)
+  list(LENGTH resumed_rows n_resumed)
+  set(row 0)
+  while(row LESS n_expected AND row LESS n_resumed)
+    list(GET expected_rows ${row} expected_row)
+    list(GET resumed_rows ${row} resumed_row)
+    if(NOT expected_row STREQUAL resumed_row)
+      break()
+    endif()
+    math(EXPR row "${row} + 1")
+  endwhile()
+  message(FATAL_ERROR "history.csv of the resumed run differs from the uninterrupted run's "
+                      "(${n_resumed} vs ${n_expected} rows), first at row ${row}:\n"
+                      "  resumed:       ${resumed_row}\n  uninterrupted: ${expected_row}\n"
+                      "interrupted run: ${interrupted_error}")
 endif()
 if(OTHER_PRM)
   # A checkpoint of another problem: one line, exit 2.

@@ -24,6 +24,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 
+#include <chrono>
 #include <memory>
 #include <ostream>
 #include <set>
@@ -166,6 +167,31 @@ private:
   /** Reads `directory`/checkpoint.bin; throws InputError if missing or of another problem. */
   void read_checkpoint(const std::string& directory);
 
+  /** prepare(), the output writers, the step controller, the initial record or the checkpoint. */
+  void start(const std::string& resume_directory);
+  /**
+   * Solves the step from `before` at the controller's size, cutting and retrying until Newton
+   * converges and the guards pass; sets `measures` and the number of `cuts`, returns the linear
+   * solves of all attempts. Throws SolverFailure when the smallest step still fails.
+   */
+  unsigned int solve_step(const State& before, Measures& measures, unsigned int& cuts);
+  /** Halves the step after `failure`, logs it; throws SolverFailure at the smallest step. */
+  void cut_after_failure(std::string failure);
+  /** Writes a checkpoint when due; on a signal also the results, then throws RunInterrupted. */
+  void checkpoint_or_stop(bool nominal_time_reached, unsigned int nominal_step);
+  /** The progress line, at most every few seconds and whenever the active set changed. */
+  void report_progress(unsigned int nominal_step, bool active_set_changed);
+  /** The reference, the summary, the warnings of switched-off guards and the final line. */
+  void finish();
+
+  /** Wall-clock bookkeeping of the progress line. */
+  struct Progress
+  {
+    std::chrono::steady_clock::time_point wall_start, last_report;
+    unsigned int steps_this_run = 0;
+    double start_fraction       = 0.; ///< of the run, done before this one started (resume)
+  };
+
   /** Counters for the progress line and the summary. */
   struct Counters
   {
@@ -234,6 +260,7 @@ private:
   TimerOutput timer;
   std::unique_ptr<StepController> controller;
   Counters counters;
+  Progress progress;
   bool show_progress = true;
 };
 } // namespace dyncontact
