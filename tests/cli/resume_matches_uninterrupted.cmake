@@ -10,6 +10,7 @@
 #    run must rebuild it from the checkpoint);
 # 3. --resume on it, and the two history files compared;
 # 4. if OTHER_PRM is set, --resume of that problem on the checkpoint must be refused (exit 2).
+include(${CMAKE_CURRENT_LIST_DIR}/../first_difference.cmake)
 string(REPLACE "|" ";" launch "${LAUNCH}")
 string(REPLACE "|" ";" options "${OPTIONS}")
 file(REMOVE_RECURSE "${DIRECTORY}")
@@ -50,15 +51,7 @@ if(NOT differ EQUAL 0)
   file(STRINGS ${DIRECTORY}/interrupted/history.csv resumed_rows)
   list(LENGTH expected_rows n_expected)
   list(LENGTH resumed_rows n_resumed)
-  set(row 0)
-  while(row LESS n_expected AND row LESS n_resumed)
-    list(GET expected_rows ${row} expected_row)
-    list(GET resumed_rows ${row} resumed_row)
-    if(NOT expected_row STREQUAL resumed_row)
-      break()
-    endif()
-    math(EXPR row "${row} + 1")
-  endwhile()
+  first_difference(resumed_rows expected_rows row resumed_row expected_row)
   message(FATAL_ERROR "history.csv of the resumed run differs from the uninterrupted run's "
                       "(${n_resumed} vs ${n_expected} rows), first at row ${row}:\n"
                       "  resumed:       ${resumed_row}\n  uninterrupted: ${expected_row}\n"

@@ -4,6 +4,7 @@
 # and cuts. Compared with EXPECTED (a file in tests/regression) line by line: a change of the
 # active set, of the iteration count or of the step control shows as the first differing line.
 # With -DUPDATE=ON it rewrites EXPECTED instead (after a change that is meant to alter them).
+include(${CMAKE_CURRENT_LIST_DIR}/../first_difference.cmake)
 string(REPLACE "|" ";" command "${COMMAND}")
 file(REMOVE_RECURSE "${DIRECTORY}")
 execute_process(COMMAND ${command} RESULT_VARIABLE result OUTPUT_QUIET ERROR_VARIABLE error)
@@ -41,23 +42,7 @@ if(NOT reduced STREQUAL expected)
   string(REPLACE "\n" ";" expected_lines "${expected}")
   list(LENGTH got_lines n_got)
   list(LENGTH expected_lines n_expected)
-  set(line 0)
-  while(line LESS n_got AND line LESS n_expected)
-    list(GET got_lines ${line} got)
-    list(GET expected_lines ${line} want)
-    if(NOT got STREQUAL want)
-      break()
-    endif()
-    math(EXPR line "${line} + 1")
-  endwhile()
-  set(got "(none)")
-  set(want "(none)")
-  if(line LESS n_got)
-    list(GET got_lines ${line} got)
-  endif()
-  if(line LESS n_expected)
-    list(GET expected_lines ${line} want)
-  endif()
+  first_difference(got_lines expected_lines line got want)
   message(FATAL_ERROR "active sets or iteration counts changed (${n_got} vs ${n_expected} lines); "
                       "first difference at line ${line}:\n  got:      ${got}\n  expected: ${want}\n"
                       "If the change is intended: cmake -DUPDATE=ON with this test's arguments "
