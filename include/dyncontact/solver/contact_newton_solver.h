@@ -47,8 +47,8 @@ namespace dyncontact
  * measured as the force residual together with the active gaps times the largest tangent diagonal.
  *
  * Parallel layout: rows of the matrix are distributed like the DoFs, the multiplier rows belong to
- * the last rank; the direct solver is Amesos KLU on one rank and Amesos MUMPS on several. Vectors
- * passed in and out are whole on every rank.
+ * the last rank; the direct solver is Amesos KLU on every number of ranks (bitwise reproducible;
+ * MUMPS was not, run to run, on 2 ranks). Vectors passed in and out are whole on every rank.
  *
  * It owns the matrix and its fixed sparsity pattern; it does not know Newmark's update formulas.
  */

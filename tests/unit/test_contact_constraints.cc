@@ -1,0 +1,114 @@
+// Unit tests of the contact constraint set apart from any mesh: its saddle-point rows against
+// finite differences of the gap, and the active-set update on a toy set of pairs.
+#include <dyncontact/contact/contact_constraints.h>
+
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace dyncontact::testing
+{
+namespace
+{
+/** Node `index` of a 2D toy problem: DoFs 2 index and 2 index + 1, at `position`. */
+Node<2> toy_node(const unsigned int index, const Point<2>& position)
+{
+  return {static_cast<types::material_id>(index), position, {{2 * index, 2 * index + 1}}};
+}
+
+/** A pair of node `a` against node `b` (or, with b < 0, a wall through `wall`) along `normal`. */
+ContactPair<2> toy_pair(const Node<2>& a,
+                        const std::optional<Node<2>>& b,
+                        const Tensor<1, 2>& normal,
+                        const Point<2>& wall = Point<2>())
+{
+  ContactPair<2> pair;
+  pair.node_a            = a;
+  pair.node_b            = b;
+  pair.wall_point        = wall;
+  pair.normal            = normal;
+  pair.penalty_stiffness = 0.;
+  return pair;
+}
+} // namespace
+
+// The constraint row of an active pair is -dg/du (the symmetric system [K, -G^T; -G, -D] with
+// G = dg/du), its residual -g, and an inactive pair's row is the trivial lambda = 0 with the given
+// diagonal. Reference: central differences of ContactConstraints::gap(), exact for the gap, which
+// is linear in u at fixed normals (bound 1e-10 absolute on coefficients of order 1). An oblique
+// node-to-node pair and an oblique wall pair, at a displacement that leaves them penetrating.
+TEST(ContactConstraints, RowsAreMinusTheGapGradient)
+{
+  const Tensor<1, 2> n1({0.6, 0.8}), n2({-0.28, 0.96});
+  const Node<2> a = toy_node(0, Point<2>(0., 0.)), b = toy_node(1, Point<2>(0.3, 0.4));
+  const Node<2> c = toy_node(2, Point<2>(2., 1.));
+  ContactConstraints<2> contact({toy_pair(a, b, n1), toy_pair(c, {}, n2, Point<2>(1.9, 1.5))},
+                                ContactFormulation::lagrange_multiplier);
+  const unsigned int n_dofs = 6;
+  Vector<double> u(n_dofs);
+  u[0] = 0.5, u[1] = 0.6, u[4] = 0.3, u[5] = 0.9; // both pairs penetrate
+  ASSERT_LT(contact.gap(0, u), 0.);
+  ASSERT_LT(contact.gap(1, u), 0.);
+  contact.update_active_set(u, 1e-12, 0.);
+  ASSERT_TRUE(contact.is_active(0) && contact.is_active(1));
+
+  DynamicSparsityPattern pattern(n_dofs + 2);
+  contact.add_to_sparsity(pattern, n_dofs);
+  TrilinosWrappers::SparseMatrix matrix;
+  matrix.reinit(pattern);
+  Vector<double> residual(2);
+  contact.assemble_constraint_rows(u, 7., &matrix, residual);
+  matrix.compress(VectorOperation::add);
+  for (unsigned int k = 0; k < 2; ++k)
+  {
+    EXPECT_NEAR(residual[k], -contact.gap(k, u), 1e-14);
+    for (unsigned int dof = 0; dof < n_dofs; ++dof)
+    {
+      Vector<double> plus = u, minus = u;
+      plus[dof] += 1e-3;
+      minus[dof] -= 1e-3;
+      const double gradient = (contact.gap(k, plus) - contact.gap(k, minus)) / 2e-3;
+      EXPECT_NEAR(matrix.el(n_dofs + k, dof), -gradient, 1e-10) << "pair " << k << " dof " << dof;
+      EXPECT_NEAR(matrix.el(dof, n_dofs + k), -gradient, 1e-10) << "pair " << k << " dof " << dof;
+    }
+    EXPECT_EQ(matrix.el(n_dofs + k, n_dofs + k), 0.); // Lagrange multipliers: no compliance
+  }
+}
+
+// The active set on a toy set of four wall pairs in 1D terms (normal +y, gaps set by u): a pair
+// enters when it penetrates beyond the gap tolerance, an open or barely touching one stays out,
+// an active pair leaves when its multiplier is tensile beyond the force tolerance and stays with
+// a compressive one; a second update with nothing new changes nothing. (Hughes et al. 1976.)
+TEST(ContactConstraints, ActiveSetEntersOnPenetrationAndLeavesOnTension)
+{
+  const Tensor<1, 2> up({0., 1.});
+  std::vector<ContactPair<2>> pairs;
+  for (unsigned int k = 0; k < 4; ++k)
+    pairs.push_back(toy_pair(toy_node(k, Point<2>(k, 0.)), {}, up, Point<2>(k, 0.)));
+  ContactConstraints<2> contact(pairs, ContactFormulation::lagrange_multiplier);
+  Vector<double> u(8);
+  u[3] = 1e-3;  // pair 1 penetrates by 1e-3: enters
+  u[1] = -1e-3; // pair 0 open
+  u[5] = 1e-3;  // pair 2 penetrates: enters, then turns tensile below
+  u[7] = 1e-3;  // pair 3 penetrates: enters, stays compressive
+  EXPECT_TRUE(contact.update_active_set(u, 1e-6, 0.));
+  EXPECT_FALSE(contact.is_active(0));
+  EXPECT_TRUE(contact.is_active(1) && contact.is_active(2) && contact.is_active(3));
+
+  Vector<double> multipliers(4);
+  multipliers[1] = 2e-9;  // compressive
+  multipliers[2] = -0.5;  // tensile beyond the tolerance 1e-6
+  multipliers[3] = -1e-7; // tensile within the tolerance: stays
+  contact.add_multiplier_increment(multipliers);
+  Vector<double> closed(8); // all gaps zero now
+  EXPECT_TRUE(contact.update_active_set(closed, 1e-6, 1e-6));
+  EXPECT_FALSE(contact.is_active(0));
+  EXPECT_TRUE(contact.is_active(1));
+  EXPECT_FALSE(contact.is_active(2));
+  EXPECT_EQ(contact.active_multiplier(2), 0.); // a released pair carries no force
+  EXPECT_TRUE(contact.is_active(3));
+  EXPECT_FALSE(contact.update_active_set(closed, 1e-6, 1e-6));
+}
+} // namespace dyncontact::testing
