@@ -114,13 +114,10 @@ void run(const dyncontact::CommandLine& command_line)
   print_warnings(parameters);
   prepare_run_directory(reader, command_line.resume_directory);
   if (parameters.problem.geometry == GeometryKind::bars)
-    simulate<1>(parameters,
-                std::make_unique<BarModel>(parameters.geometry, parameters.contact),
-                command_line);
+    simulate<1>(parameters, std::make_unique<BarModel>(parameters.geometry), command_line);
   else
     simulate<2>(parameters,
-                std::make_unique<AxisymmetricMeshModel>(
-                    parameters.mesh, parameters.bodies, parameters.contact),
+                std::make_unique<AxisymmetricMeshModel>(parameters.mesh, parameters.bodies),
                 command_line);
 }
 } // namespace

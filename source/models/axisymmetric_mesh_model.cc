@@ -12,9 +12,8 @@
 namespace dyncontact
 {
 AxisymmetricMeshModel::AxisymmetricMeshModel(const MeshParameters& mesh,
-                                             const BodiesParameters& bodies,
-                                             const ContactParameters& contact)
-    : mesh(mesh), bodies(bodies), contact(contact), n_cells(0), shortest_edge(0.)
+                                             const BodiesParameters& bodies)
+    : mesh(mesh), bodies(bodies), n_cells(0), shortest_edge(0.)
 {
 }
 
@@ -98,38 +97,24 @@ Tensor<1, 2> AxisymmetricMeshModel::initial_velocity(const types::material_id bo
   return velocity;
 }
 
-std::vector<ContactPair<2>> AxisymmetricMeshModel::contact_pairs(const NodeIndex<2>&) const
+ContactDescription<2> AxisymmetricMeshModel::contact_description(const NodeIndex<2>&) const
 {
-  return {};
-}
-
-std::unique_ptr<NodeToNodeContact<2>>
-AxisymmetricMeshModel::create_surface_contact(const DoFHandler<2>& dof_handler,
-                                              const Kinematics<2>& kinematics,
-                                              const NodeIndex<2>& nodes) const
-{
+  ContactDescription<2> description;
   if (n_bodies() == 1)
-    return nullptr;
+    return description;
   if (n_bodies() > 2)
     throw InputError("Bodies/number of bodies = " + std::to_string(n_bodies()) +
                      ": contact is implemented between two bodies; use 1 or 2.");
-  const double stiffest =
-      std::max(bodies.bodies[0].youngs_modulus, bodies.bodies[1].youngs_modulus);
   // Facing nodes of the mirrored meshes coincide in r to round-off of the mesh generator.
-  const double matching_tolerance = 1e-6 * shortest_edge;
-  try
-  {
-    return std::make_unique<NodeToNodeContact<2>>(
-        ContactSurface<2>(dof_handler, kinematics, nodes, SphereMeshIds::surface(0)),
-        ContactSurface<2>(dof_handler, kinematics, nodes, SphereMeshIds::surface(1)),
-        contact.penalty_factor * stiffest / shortest_edge,
-        matching_tolerance,
-        touching_tolerance());
-  }
-  catch (const InputError& error)
-  {
-    throw InputError("Mesh/file = '" + mesh.file + "': " + error.what());
-  }
+  description.surface_pair = {
+      SphereMeshIds::surface(0),
+      SphereMeshIds::surface(1),
+      std::max(bodies.bodies[0].youngs_modulus, bodies.bodies[1].youngs_modulus),
+      shortest_edge,
+      1e-6 * shortest_edge,
+      touching_tolerance(),
+      "Mesh/file = '" + mesh.file + "'"};
+  return description;
 }
 
 std::vector<types::global_dof_index>

@@ -15,10 +15,7 @@ double element_stiffness(const BarParameters& bar)
 }
 } // namespace
 
-BarModel::BarModel(const GeometryParameters& geometry, const ContactParameters& contact)
-    : geometry(geometry), contact(contact)
-{
-}
+BarModel::BarModel(const GeometryParameters& geometry) : geometry(geometry) {}
 
 std::vector<unsigned int> BarModel::bars_in_x_order() const
 {
@@ -78,40 +75,39 @@ Tensor<1, 1> BarModel::initial_velocity(const types::material_id body, const Poi
   return velocity;
 }
 
-std::vector<ContactPair<1>> BarModel::contact_pairs(const NodeIndex<1>& nodes) const
+ContactDescription<1> BarModel::contact_description(const NodeIndex<1>& nodes) const
 {
   Tensor<1, 1> plus_x;
   plus_x[0]                             = 1.;
   const std::vector<unsigned int> order = bars_in_x_order();
-  std::vector<ContactPair<1>> pairs;
+  ContactDescription<1> description;
   for (unsigned int i = 0; i + 1 < order.size(); ++i)
   {
     const BarParameters& left  = geometry.bars[order[i]];
     const BarParameters& right = geometry.bars[order[i + 1]];
-    ContactPair<1> pair;
-    pair.node_a = nodes.closest_node(order[i], Point<1>(left.right_end()));
-    pair.node_b = nodes.closest_node(order[i + 1], Point<1>(right.left_end));
-    pair.normal = plus_x;
-    pair.penalty_stiffness =
-        contact.penalty_factor * std::max(element_stiffness(left), element_stiffness(right));
-    pairs.push_back(pair);
+    description.fixed_pairs.push_back(
+        {nodes.closest_node(order[i], Point<1>(left.right_end())),
+         nodes.closest_node(order[i + 1], Point<1>(right.left_end)),
+         Point<1>(),
+         plus_x,
+         std::max(element_stiffness(left), element_stiffness(right))});
   }
   if (geometry.wall_enabled)
   {
     const BarParameters& rightmost = geometry.bars[order.back()];
-    ContactPair<1> pair;
-    pair.node_a            = nodes.closest_node(order.back(), Point<1>(rightmost.right_end()));
-    pair.wall_point        = Point<1>(geometry.wall_position);
-    pair.normal            = plus_x;
-    pair.penalty_stiffness = contact.penalty_factor * element_stiffness(rightmost);
-    pairs.push_back(pair);
+    description.fixed_pairs.push_back(
+        {nodes.closest_node(order.back(), Point<1>(rightmost.right_end())),
+         std::nullopt,
+         Point<1>(geometry.wall_position),
+         plus_x,
+         element_stiffness(rightmost)});
   }
-  return pairs;
+  return description;
 }
 
 std::vector<Node<1>> BarModel::monitor_nodes(const NodeIndex<1>& nodes) const
 {
-  const std::vector<ContactPair<1>> pairs = contact_pairs(nodes);
+  const auto pairs = contact_description(nodes).fixed_pairs;
   std::vector<Node<1>> monitors;
   for (unsigned int b = 0; b < geometry.bars.size(); ++b)
   {

@@ -9,13 +9,6 @@ std::vector<types::global_dof_index> ProblemModel<dim>::fixed_dofs(const NodeInd
 }
 
 template <int dim>
-std::unique_ptr<NodeToNodeContact<dim>> ProblemModel<dim>::create_surface_contact(
-    const DoFHandler<dim>&, const Kinematics<dim>&, const NodeIndex<dim>&) const
-{
-  return nullptr;
-}
-
-template <int dim>
 std::vector<SurfaceTraction<dim>> ProblemModel<dim>::surface_tractions() const
 {
   return {};

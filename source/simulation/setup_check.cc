@@ -24,7 +24,7 @@ void check_run_setup(const RunParameters& parameters)
   check_output_directory(parameters.output.directory);
   if (parameters.problem.geometry == GeometryKind::bars)
   {
-    auto model = std::make_unique<BarModel>(parameters.geometry, parameters.contact);
+    auto model = std::make_unique<BarModel>(parameters.geometry);
     if (parameters.output.write_exact_solution)
       model->exact_solution(parameters.time.n_steps() * parameters.time.time_step);
     prepare<1>(parameters, std::move(model));
@@ -32,8 +32,7 @@ void check_run_setup(const RunParameters& parameters)
   else
   {
     prepare<2>(parameters,
-               std::make_unique<AxisymmetricMeshModel>(
-                   parameters.mesh, parameters.bodies, parameters.contact));
+               std::make_unique<AxisymmetricMeshModel>(parameters.mesh, parameters.bodies));
   }
 }
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/simulation/interruption.h>
 #include <dyncontact/simulation/simulation.h>
 
@@ -77,13 +78,10 @@ void Simulation<dim>::setup()
   fixed_dofs = model->fixed_dofs(*nodes);
   loads      = std::make_unique<SurfaceTractions<dim>>(
       dof_handler, mapping, *kinematics, model->surface_tractions());
-  surface_contact = model->create_surface_contact(dof_handler, *kinematics, *nodes);
-  if (surface_contact)
-    contact =
-        std::make_unique<ContactConstraints<dim>>(*surface_contact, parameters.contact.formulation);
-  else
-    contact = std::make_unique<ContactConstraints<dim>>(model->contact_pairs(*nodes),
-                                                        parameters.contact.formulation);
+  Contact<dim> built = create_contact(
+      model->contact_description(*nodes), dof_handler, *kinematics, *nodes, parameters.contact);
+  surface_contact  = std::move(built.surfaces);
+  contact          = std::move(built.constraints);
   contact_dynamics = create_contact_dynamics<dim>(parameters.contact.dynamics);
   solver =
       std::make_unique<ContactNewtonSolver<dim>>(dof_handler,

@@ -82,7 +82,7 @@ BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>&
 {
   BarRun run;
   run.parameters = test_parameters(prm_file, overrides);
-  const BarModel model(run.parameters.geometry, run.parameters.contact);
+  const BarModel model(run.parameters.geometry);
   run.simulation = run_quietly<1>(run.parameters, std::make_unique<BarModel>(model));
   run.exact      = std::make_unique<ExactBarSolution>(
       model.exact_solution(run.parameters.time.end_time + run.parameters.time.time_step));
@@ -93,11 +93,10 @@ MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string
 {
   MeshRun run;
   run.parameters = test_parameters(prm_file, overrides);
-  run.simulation =
-      run_quietly<2>(run.parameters,
-                     std::make_unique<AxisymmetricMeshModel>(
-                         run.parameters.mesh, run.parameters.bodies, run.parameters.contact),
-                     &run.profiles);
+  run.simulation = run_quietly<2>(
+      run.parameters,
+      std::make_unique<AxisymmetricMeshModel>(run.parameters.mesh, run.parameters.bodies),
+      &run.profiles);
   return run;
 }
 

@@ -3,6 +3,7 @@
 // of exactly zero, also far from the origin; an overlap beyond 1e-9 of an element is rejected
 // with the digits that show it.
 #include <dyncontact/base/parameters.h>
+#include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/models/bar_model.h>
 
@@ -30,7 +31,7 @@ RunParameters read(const std::string& prm_file, const std::vector<std::string>& 
 /** The candidate contact pairs of a bar problem, built from its nodes as a run builds them. */
 std::vector<ContactPair<1>> contact_pairs(const RunParameters& parameters)
 {
-  BarModel model(parameters.geometry, parameters.contact);
+  BarModel model(parameters.geometry);
   Triangulation<1> triangulation;
   model.create_triangulation(triangulation);
   DoFHandler<1> dof_handler(triangulation);
@@ -38,7 +39,10 @@ std::vector<ContactPair<1>> contact_pairs(const RunParameters& parameters)
   const NodeIndex<1> nodes(dof_handler, MappingQ<1>(1));
   // The exact solution accepts the geometry too (it rejects overlaps with its own tolerance).
   model.exact_solution(parameters.time.end_time);
-  return model.contact_pairs(nodes);
+  const auto kinematics    = model.create_kinematics();
+  const Contact<1> contact = create_contact(
+      model.contact_description(nodes), dof_handler, *kinematics, nodes, parameters.contact);
+  return contact.constraints->candidate_pairs();
 }
 
 /** The message of the InputError that reading `prm_file` with `overrides` throws, or "". */

@@ -19,9 +19,7 @@ namespace dyncontact
 class AxisymmetricMeshModel : public ProblemModel<2>
 {
 public:
-  AxisymmetricMeshModel(const MeshParameters& mesh,
-                        const BodiesParameters& bodies,
-                        const ContactParameters& contact);
+  AxisymmetricMeshModel(const MeshParameters& mesh, const BodiesParameters& bodies);
 
   unsigned int element_degree() const override { return 2; }
   unsigned int n_bodies() const override { return bodies.bodies.size(); }
@@ -34,20 +32,14 @@ public:
   std::unique_ptr<Kinematics<2>> create_kinematics() const override;
   /** Body b's `Initial velocity` at X; throws InputError if it is not finite there. */
   Tensor<1, 2> initial_velocity(types::material_id body, const Point<2>& X) const override;
-  /** None: the contact of two bodies has current normals, see create_surface_contact(). */
-  std::vector<ContactPair<2>> contact_pairs(const NodeIndex<2>& nodes) const override;
   /**
    * With two bodies: node-to-node contact between their sphere surfaces (boundary ids
    * SphereMeshIds::surface(0) and (1)), which must have matching facing nodes and must not
    * overlap (they may touch, to touching_tolerance(), and then start closed); the penalty
-   * stiffness of a pair is Contact/penalty factor times E / h_min times its contact area (E of the
-   * stiffer body, h_min the shortest cell edge). With one body: null. More than two bodies are
-   * rejected (InputError).
+   * stiffness scale per unit contact area is E / h_min (E of the stiffer body, h_min the shortest
+   * cell edge). With one body: no contact. More than two bodies are rejected (InputError).
    */
-  std::unique_ptr<NodeToNodeContact<2>>
-  create_surface_contact(const DoFHandler<2>& dof_handler,
-                         const Kinematics<2>& kinematics,
-                         const NodeIndex<2>& nodes) const override;
+  ContactDescription<2> contact_description(const NodeIndex<2>& nodes) const override;
   std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
   std::vector<Node<2>> monitor_nodes(const NodeIndex<2>& nodes) const override;
   /** Body b's `Surface traction` on its surface (boundary id SphereMeshIds::surface(b)). */
@@ -92,7 +84,6 @@ private:
 
   MeshParameters mesh;
   BodiesParameters bodies;
-  ContactParameters contact;
   std::vector<SphereGeometry> spheres;
   unsigned int n_cells;
   double shortest_edge;

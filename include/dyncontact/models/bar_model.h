@@ -17,7 +17,7 @@ namespace dyncontact
 class BarModel : public ProblemModel<1>
 {
 public:
-  BarModel(const GeometryParameters& geometry, const ContactParameters& contact);
+  explicit BarModel(const GeometryParameters& geometry);
 
   unsigned int element_degree() const override { return 1; }
   unsigned int n_bodies() const override { return geometry.bars.size(); }
@@ -27,7 +27,11 @@ public:
   std::vector<BodyMaterial> body_materials() const override;
   std::unique_ptr<Kinematics<1>> create_kinematics() const override;
   Tensor<1, 1> initial_velocity(types::material_id body, const Point<1>& X) const override;
-  std::vector<ContactPair<1>> contact_pairs(const NodeIndex<1>& nodes) const override;
+  /**
+   * A pair between the facing ends of neighbouring bars, normal +x, stiffness scale E A / h of
+   * the stiffer end element; the rightmost bar's end against the wall if there is one.
+   */
+  ContactDescription<1> contact_description(const NodeIndex<1>& nodes) const override;
   std::vector<Node<1>> monitor_nodes(const NodeIndex<1>& nodes) const override;
   Tensor<1, 1> impact_direction() const override;
   void write_reference(const std::string& directory,
@@ -43,6 +47,5 @@ private:
   std::vector<unsigned int> bars_in_x_order() const;
 
   GeometryParameters geometry;
-  ContactParameters contact;
 };
 } // namespace dyncontact

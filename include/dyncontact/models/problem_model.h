@@ -1,8 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/contact/contact_constraints.h>
-#include <dyncontact/contact/node_to_node_contact.h>
+#include <dyncontact/contact/contact_description.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/node_index.h>
@@ -54,19 +53,12 @@ public:
   /** Velocity at t = 0 of the material point X of `body`. */
   virtual Tensor<1, dim> initial_velocity(types::material_id body, const Point<dim>& X) const = 0;
 
-  /** Candidate contact pairs with fixed normals, built from the mesh's nodes. */
-  virtual std::vector<ContactPair<dim>> contact_pairs(const NodeIndex<dim>& nodes) const = 0;
-
   /**
-   * Node-to-node contact between curved surfaces, whose normals follow the deformation, or null
-   * (the default) if the model's contact is given by contact_pairs() alone. A model uses one or the
-   * other, not both.
+   * What the model says about contact, from the mesh's nodes: fixed-normal pairs or a pair of
+   * matching surfaces, with the stiffness scales penalties are sized from (create_contact()
+   * builds it). Throws InputError for a contact the model cannot describe.
    */
-  virtual std::unique_ptr<NodeToNodeContact<dim>>
-  create_surface_contact(const DoFHandler<dim>& dof_handler,
-                         const Kinematics<dim>& kinematics,
-                         const NodeIndex<dim>& nodes) const;
-
+  virtual ContactDescription<dim> contact_description(const NodeIndex<dim>& nodes) const = 0;
   /** DoFs held at zero for all time (e.g. u_r on the symmetry axis). The default: none. */
   virtual std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<dim>& nodes) const;
 

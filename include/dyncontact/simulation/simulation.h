@@ -3,6 +3,7 @@
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact/node_to_node_contact.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/discretization/node_index.h>

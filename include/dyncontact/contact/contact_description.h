@@ -1,0 +1,54 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/discretization/node_index.h>
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * What a problem model says about its contact, without building anything: candidate pairs with
+ * fixed normals (bars, a rigid wall) and/or a pair of matching contact surfaces by boundary id,
+ * each with the elastic stiffness scale a penalty is sized from. create_contact() builds the
+ * geometry and the constraint set from it and applies Contact/formulation and Contact/penalty
+ * factor; models never see those.
+ */
+template <int dim>
+struct ContactDescription
+{
+  /** A node of body A against a node of body B, or against a rigid wall, along a fixed normal. */
+  struct FixedPair
+  {
+    Node<dim> node_a;
+    std::optional<Node<dim>> node_b; ///< empty: a rigid wall through `wall_point`
+    Point<dim> wall_point;
+    Tensor<1, dim> normal;  ///< unit normal from A toward B (or the wall)
+    double stiffness_scale; ///< E A / h of the stiffer side [force/length]; penalty = factor x this
+  };
+
+  /**
+   * Node-to-node contact between two boundaries whose nodes face each other (mirrored meshes);
+   * the pairs' normals follow the deformation (NodeToNodeContact).
+   */
+  struct SurfacePair
+  {
+    types::boundary_id surface_a;
+    types::boundary_id surface_b;
+    /// the penalty per unit contact area is factor x stiffness_modulus / stiffness_length
+    double stiffness_modulus;  ///< [force/area], the stiffer body's Young's modulus
+    double stiffness_length;   ///< [length], e.g. the shortest cell edge
+    double matching_tolerance; ///< [length], facing nodes must coincide across to this
+    double touching_tolerance; ///< [length], a gap above -this at t = 0 is touching, not overlap
+    std::string source;        ///< what errors name, e.g. "Mesh/file = 'two_spheres.geo'"
+  };
+
+  std::vector<FixedPair> fixed_pairs;
+  std::optional<SurfacePair> surface_pair;
+};
+} // namespace dyncontact

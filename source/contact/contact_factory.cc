@@ -1,0 +1,59 @@
+#include <dyncontact/contact/contact_factory.h>
+
+namespace dyncontact
+{
+template <int dim>
+Contact<dim> create_contact(const ContactDescription<dim>& description,
+                            const DoFHandler<dim>& dof_handler,
+                            const Kinematics<dim>& kinematics,
+                            const NodeIndex<dim>& nodes,
+                            const ContactParameters& parameters)
+{
+  Contact<dim> contact;
+  if (description.surface_pair)
+  {
+    Assert(description.fixed_pairs.empty(), ExcMessage("surface contact or fixed pairs, not both"));
+    const auto& surfaces = *description.surface_pair;
+    try
+    {
+      contact.surfaces = std::make_unique<NodeToNodeContact<dim>>(
+          ContactSurface<dim>(dof_handler, kinematics, nodes, surfaces.surface_a),
+          ContactSurface<dim>(dof_handler, kinematics, nodes, surfaces.surface_b),
+          parameters.penalty_factor * surfaces.stiffness_modulus / surfaces.stiffness_length,
+          surfaces.matching_tolerance,
+          surfaces.touching_tolerance);
+    }
+    catch (const InputError& error)
+    {
+      throw InputError(surfaces.source + ": " + error.what());
+    }
+    contact.constraints =
+        std::make_unique<ContactConstraints<dim>>(*contact.surfaces, parameters.formulation);
+    return contact;
+  }
+  std::vector<ContactPair<dim>> pairs;
+  for (const auto& described : description.fixed_pairs)
+  {
+    ContactPair<dim> pair;
+    pair.node_a            = described.node_a;
+    pair.node_b            = described.node_b;
+    pair.wall_point        = described.wall_point;
+    pair.normal            = described.normal;
+    pair.penalty_stiffness = parameters.penalty_factor * described.stiffness_scale;
+    pairs.push_back(pair);
+  }
+  contact.constraints = std::make_unique<ContactConstraints<dim>>(pairs, parameters.formulation);
+  return contact;
+}
+
+template Contact<1> create_contact(const ContactDescription<1>&,
+                                   const DoFHandler<1>&,
+                                   const Kinematics<1>&,
+                                   const NodeIndex<1>&,
+                                   const ContactParameters&);
+template Contact<2> create_contact(const ContactDescription<2>&,
+                                   const DoFHandler<2>&,
+                                   const Kinematics<2>&,
+                                   const NodeIndex<2>&,
+                                   const ContactParameters&);
+} // namespace dyncontact
