@@ -260,14 +260,6 @@ void parse_file(ParameterHandler& prm, const std::string& filename, const bool s
 const ContactDynamicsKind default_contact_dynamics = ContactDynamicsKind::taylor_papadopoulos;
 } // namespace
 
-const NameTable<ContactDynamicsKind>& contact_dynamics_names()
-{
-  static const NameTable<ContactDynamicsKind> names{
-      {"none", ContactDynamicsKind::none},
-      {"taylor-papadopoulos", ContactDynamicsKind::taylor_papadopoulos}};
-  return names;
-}
-
 const NameTable<ContactFormulation>& contact_formulation_names()
 {
   static const NameTable<ContactFormulation> names{

@@ -4,6 +4,14 @@
 
 namespace dyncontact
 {
+const NameTable<ContactDynamicsKind>& contact_dynamics_names()
+{
+  static const NameTable<ContactDynamicsKind> names{
+      {"none", ContactDynamicsKind::none},
+      {"taylor-papadopoulos", ContactDynamicsKind::taylor_papadopoulos}};
+  return names;
+}
+
 template <int dim>
 std::unique_ptr<ContactDynamics<dim>> create_contact_dynamics(const ContactDynamicsKind kind)
 {

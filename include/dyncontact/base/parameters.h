@@ -2,6 +2,7 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/name_table.h>
+#include <dyncontact/contact_dynamics/contact_dynamics_kind.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
@@ -14,18 +15,6 @@
 
 namespace dyncontact
 {
-/**
- * The treatment of the contact nodes' rates by the time integration (Contact/dynamics): what the
- * paper's modified Newmark is one of (sections 4 and 5).
- */
-enum class ContactDynamicsKind
-{
-  none,               ///< classical: contact constrains displacements only
-  taylor_papadopoulos ///< also [[v]].n = 0 and [[a]].n = 0 on active pairs, paper eqs. (19)-(24)
-};
-
-/** The names of Contact/dynamics. */
-const NameTable<ContactDynamicsKind>& contact_dynamics_names();
 
 /** How the contact constraint g >= 0 is enforced. */
 enum class ContactFormulation

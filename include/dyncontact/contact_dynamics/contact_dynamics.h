@@ -15,8 +15,9 @@ namespace dyncontact
  * How the time integration treats the rates of the contact nodes: the family of fixes for the
  * velocity and acceleration jumps that implicit time stepping produces at contact events
  * (Contact/dynamics). A treatment sees the integrator only through a RateMap and the contact
- * layer only through its active pairs; adding one is one new file, one line in
- * create_contact_dynamics() and one entry in contact_dynamics_names().
+ * layer only through its active pairs. Adding one is its own file, its enumerator and name in
+ * contact_dynamics_kind.h / contact_dynamics_names(), its case in create_contact_dynamics(), and
+ * its unit test; nothing else changes (not Simulation, not the parameters).
  */
 template <int dim>
 class ContactDynamics
