@@ -18,6 +18,10 @@ results=bench/results/force_ringing
 mkdir -p "$results"
 export results
 
+# The Contact/dynamics of the paper's scheme names: classical -> none, modified -> taylor-papadopoulos.
+contact_dynamics() { if [ "$1" = classical ]; then echo none; else echo taylor-papadopoulos; fi; }
+export -f contact_dynamics
+
 run_case() # name prm refinement material scheme formulation
 {
   local name=$1 prm=$2 refinement=$3 material=$4 scheme=$5 formulation=$6
@@ -27,7 +31,7 @@ run_case() # name prm refinement material scheme formulation
   profile_times=$(/usr/bin/python3 -c \
     "print(', '.join(f'{2 + $time_step * i:.6g}' for i in range(1, 41)))")
   run_sphere_impact "$results/$name" "$prm" "$refinement" "$material" \
-    --set "Time integration/scheme=$scheme" --set "Contact/formulation=$formulation" \
+    --set "Contact/dynamics=$(contact_dynamics "$scheme")" --set "Contact/formulation=$formulation" \
     --set "Output/profile times=$profile_times"
 }
 export -f run_case
