@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Contact-force ringing of the two-sphere impact, classical vs modified Newmark (issue 4, A), on the
-# cases of the README's "Known limitations" table: rho = 1 (dt = 0.05) on the coarse mesh with
-# linear and neo-Hookean material and on the medium mesh with linear material, and rho = 0.001
-# (dt = 0.0025) on the medium mesh with neo-Hookean material; plus the penalty formulation
-# (classical only: it cannot be combined with the modified scheme) on the first case.
+# cases of the "Known limitations" table in doc/validation.md: rho = 1 (dt = 0.05) on the coarse
+# mesh with linear and neo-Hookean material and on the medium mesh with linear material, and
+# rho = 0.001 (dt = 0.0025) on the medium mesh with neo-Hookean material; plus the penalty
+# formulation (classical only: it cannot be combined with the modified scheme) on the first case.
 # Ringing is the RMS of the 4th difference / 16 over 5-sample windows inside the contact
 # (measure_impact() in include/dyncontact/reference/impact_measures.h):
 #  - total: of the total contact force, relative to its peak (impact_summary.csv);

@@ -68,7 +68,7 @@ double relative_energy(const HertzImpactOfIdenticalSpheres& hertz, const OdeStat
 // round-off of tgamma; (b) an independent composite Simpson quadrature after x = 1 - s^2, which
 // removes the endpoint singularity (integrand 2 s / sqrt(1 - (1 - s^2)^{5/2}), smooth except for a
 // (1 - s)^{5/2} term at s = 1, so 20000 intervals give an error far below the tolerance 1e-12).
-// It also documents that method.md's 2.9432 is the value truncated, not rounded, to 4 decimals.
+// It also documents that doc/method.md's 2.9432 is the value truncated, not rounded, to 4 decimals.
 TEST(HertzReference, ContactDurationCoefficient)
 {
   const double coefficient = HertzImpactOfIdenticalSpheres::contact_duration_coefficient();
@@ -89,10 +89,10 @@ TEST(HertzReference, ContactDurationCoefficient)
   EXPECT_GT(std::abs(coefficient - 2.9432), 0.5e-4);
 }
 
-// Checks the closed forms for method.md's case 6.4 (E = 5e3, nu = 0.3, R = 8, v = 2, rho = 1 and
-// 0.001): against 20-digit values computed independently with mpmath (tolerance 1e-14 relative, a
-// few ulps of the pow() chain) and against method.md's rounded numbers (to half a unit of their
-// last digit). Prints the values with 15 digits.
+// Checks the closed forms for doc/method.md's case 6.4 (E = 5e3, nu = 0.3, R = 8, v = 2, rho = 1
+// and 0.001): against 20-digit values computed independently with mpmath (tolerance 1e-14
+// relative, a few ulps of the pow() chain) and against doc/method.md's rounded numbers (to half a
+// unit of their last digit). Prints the values with 15 digits.
 TEST(HertzReference, ClosedFormsReproduceMethodNumbers)
 {
   struct Case

@@ -260,7 +260,7 @@ TEST(SphereImpact, ContactZoneGrowsSteadilyUntilThePeak)
 
 TEST(SphereImpact, PenaltyContactMatchesHertzWithinMeshBands)
 {
-  // The penalty formulation (with the classical scheme, see the README) on the coarse mesh.
+  // The penalty formulation (with the classical scheme, see doc/method.md) on the coarse mesh.
   const MeshRun run =
       run_mesh_case("prm/spheres_rho0.001.prm",
                     {coarse_mesh, "Contact/dynamics=none", "Contact/formulation=penalty"});

@@ -8,8 +8,8 @@ namespace dyncontact
 {
 /**
  * Hertz's quasi-static theory of the frictionless, head-on impact of two identical elastic spheres
- * (method.md section 5): closed forms for the maximum approach, peak force, contact duration and
- * impulse, and the time histories of the approach and of the contact force.
+ * (doc/method.md section 5): closed forms for the maximum approach, peak force, contact duration
+ * and impulse, and the time histories of the approach and of the contact force.
  *
  * Model. With the effective radius R* = R / 2, modulus E* = E / (2 (1 - nu^2)), mass m* = m / 2
  * (m = rho 4/3 pi R^3) and stiffness K = 4/3 E* sqrt(R*), the approach d of the two centres (the
