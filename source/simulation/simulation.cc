@@ -31,7 +31,7 @@ Simulation<dim>::Simulation(const RunParameters& parameters,
                             std::ostream& log)
     : parameters(parameters), model(std::move(model)),
       is_root_rank(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0), log(log, is_root_rank),
-      newmark(parameters.time), triangulation(MPI_COMM_WORLD),
+      integrator(parameters.time), triangulation(MPI_COMM_WORLD),
       fe(FE_Q<dim>(this->model->element_degree()), dim), mapping(this->model->element_degree()),
       n_steps(0), time(0.), guards(parameters.guards), step_history(history_columns()),
       timer(this->log, TimerOutput::never, TimerOutput::wall_times)
@@ -135,7 +135,7 @@ void Simulation<dim>::setup()
 
   log << "dyncontact: " << dof_handler.n_dofs() << " displacement DoFs, " << contact->n_pairs()
       << " contact candidate(s), " << n_steps << " steps of dt = " << dt
-      << ", Newmark (beta = " << newmark.beta() << ", gamma = " << newmark.gamma()
+      << ", Newmark (beta = " << integrator.beta() << ", gamma = " << integrator.gamma()
       << "), contact dynamics " << contact_dynamics_names().name(parameters.contact.dynamics)
       << ", " << contact_formulation_names().name(parameters.contact.formulation) << " contact\n";
   if (std::abs(n_steps * dt - parameters.time.end_time) > 1e-9 * parameters.time.end_time)
@@ -158,8 +158,8 @@ double Simulation<dim>::penalty_spring_omega_dt() const
       const double reduced = pair.against_wall() ? mass_a
                                                  : mass_a * mass[pair.node_b->dofs[0]] /
                                                        (mass_a + mass[pair.node_b->dofs[0]]);
-      spring_omega_dt      = std::max(spring_omega_dt,
-                                 newmark.time_step() * std::sqrt(pair.penalty_stiffness / reduced));
+      spring_omega_dt      = std::max(
+          spring_omega_dt, integrator.time_step() * std::sqrt(pair.penalty_stiffness / reduced));
     }
   return spring_omega_dt;
 }
@@ -185,22 +185,22 @@ void Simulation<dim>::size_automatic_penalty()
   // force peaks 3.2 against the exact 0.5, 117 contact episodes). At omega dt = 1 the spring's
   // period error is 8 % and the force peak is 0.513 (1 episode). In the quasi-static regime of
   // the spheres both are unresolved, the stiff penalty behaves and keeps the penetration small.
-  const double body_omega_dt   = model->highest_frequency() * newmark.time_step();
+  const double body_omega_dt   = model->highest_frequency() * integrator.time_step();
   const double spring_omega_dt = penalty_spring_omega_dt();
   if (body_omega_dt <= resolved_omega_dt * (1. + 1e-9) && spring_omega_dt > 1.)
   {
     // With 2 beta < gamma the spring and the mesh together must stay below the stability limit
     // (see check_stability()); a spring softer than omega dt = 1 would buy that with a penetration
     // growing as 1 / (omega dt)^2, so such a time step is refused instead.
-    const double limit = newmark.stability_limit();
+    const double limit = integrator.stability_limit();
     if (body_omega_dt * body_omega_dt + 1. > limit * limit * (1. + 2. * suggestion_rounding))
       throw InputError(
           "Contact/penalty factor = auto: with Time integration/beta = " +
-          format_number(newmark.beta()) +
+          format_number(integrator.beta()) +
           " < gamma/2 the mesh's highest mode (omega dt = " + format_number(body_omega_dt) +
           ") leaves a penalty spring of omega dt = 1 no room below the stability limit " +
           format_number(limit) + "; use a time step <= " +
-          format_number(newmark.time_step() * std::sqrt(limit * limit - 1.) / body_omega_dt) +
+          format_number(integrator.time_step() * std::sqrt(limit * limit - 1.) / body_omega_dt) +
           ", beta >= gamma/2, or Lagrange multipliers.");
     const double scale = 1. / (spring_omega_dt * spring_omega_dt);
     contact->scale_penalty_stiffness(scale);
@@ -214,7 +214,7 @@ void Simulation<dim>::size_automatic_penalty()
 template <int dim>
 void Simulation<dim>::check_stability() const
 {
-  const double body_omega_dt   = model->highest_frequency() * newmark.time_step();
+  const double body_omega_dt   = model->highest_frequency() * integrator.time_step();
   const double spring_omega_dt = penalty_spring_omega_dt();
   // A resolved mesh (omega dt <= 2, Courant number about 1) with an unresolved penalty spring: the
   // spring is the one frequency the step cannot follow, and the contact node chatters (see
@@ -234,15 +234,16 @@ void Simulation<dim>::check_stability() const
   // coupled highest mode is bounded by sqrt(omega_mesh^2 + omega_spring^2) (Weyl's inequality on
   // M^-1/2 (K + K_penalty) M^-1/2): 6.1 with a spring of omega dt = 1 on a mesh at 2 (bound 2.24,
   // limit 2.004) went from energy 5 to 6e51. Such an input is rejected before the first step.
-  const double limit = newmark.stability_limit();
+  const double limit = integrator.stability_limit();
   const auto reject = [&](const std::string& what, const double omega_dt, const std::string& remedy)
   {
     throw InputError(
-        "Time integration/time step = " + format_number(newmark.time_step()) + ": " + what +
+        "Time integration/time step = " + format_number(integrator.time_step()) + ": " + what +
         " has omega dt = " + format_number(omega_dt) + ", above the stability limit " +
-        format_number(limit) + " of Newmark with beta = " + format_number(newmark.beta()) +
-        ", gamma = " + format_number(newmark.gamma()) + "; use a time step <= " +
-        format_number(newmark.time_step() * limit / omega_dt) + ", 2 beta >= gamma" + remedy + ".");
+        format_number(limit) + " of Newmark with beta = " + format_number(integrator.beta()) +
+        ", gamma = " + format_number(integrator.gamma()) +
+        "; use a time step <= " + format_number(integrator.time_step() * limit / omega_dt) +
+        ", 2 beta >= gamma" + remedy + ".");
   };
   if (body_omega_dt > limit * (1. + suggestion_rounding))
     reject("the mesh's highest mode", body_omega_dt, "");
@@ -347,8 +348,8 @@ std::vector<double> Simulation<dim>::body_forces() const
 template <int dim>
 void Simulation<dim>::accumulate_impulses(const State& before)
 {
-  const double dt                  = newmark.time_step();
-  const double gamma               = newmark.gamma();
+  const double dt                  = integrator.time_step();
+  const double gamma               = integrator.gamma();
   const std::vector<double> forces = body_forces();
   for (unsigned int b = 0; b < forces.size(); ++b)
     impulses[b] += dt * ((1. - gamma) * before.body_forces[b] + gamma * forces[b]);
@@ -374,20 +375,20 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   const Vector<double>& old_velocity     = before.velocity;
   const Vector<double>& old_acceleration = before.acceleration;
   Vector<double> predictor, increment(dof_handler.n_dofs());
-  newmark.predict(old_displacement, old_velocity, old_acceleration, predictor);
+  integrator.predict(old_displacement, old_velocity, old_acceleration, predictor);
   Vector<double> last_configuration = old_displacement; // as an increment over the predictor
   last_configuration -= predictor;
   external_force    = loads->force(time);
   const auto report = solver->solve(
-      predictor, newmark.inertia_factor(), external_force, last_configuration, increment);
+      predictor, integrator.inertia_factor(), external_force, last_configuration, increment);
   internal_force = solver->internal_force();
   balance_body_momenta(increment);
   displacement = predictor;
   displacement += increment;
   contact->update_geometry(displacement);
-  newmark.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
+  integrator.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
   contact_dynamics->correct_rates(
-      newmark.rate_map(),
+      integrator.rate_map(),
       *contact,
       mass,
       {old_displacement, old_velocity, old_acceleration, displacement, increment},
@@ -411,7 +412,7 @@ void Simulation<dim>::balance_body_momenta(Vector<double>& increment) const
   Vector<double> contact_force(dof_handler.n_dofs());
   contact->add_contact_forces(contact_force);
   const std::vector<bool> in_active_pair = active_pair_dofs();
-  const double c                         = newmark.inertia_factor();
+  const double c                         = integrator.inertia_factor();
   std::vector<double> residual_sum(model->n_bodies(), 0.), inertia_sum(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
     if (!is_fixed_dof[i] && dof_direction[i] != 0. && !in_active_pair[i])
@@ -475,7 +476,7 @@ typename Simulation<dim>::Measures Simulation<dim>::measure() const
   // After a step the solver's last evaluation was at this displacement: reuse its pass.
   measures.strain_energy =
       step_history.n_rows() == 0 ? bodies->strain_energy(displacement) : solver->strain_energy();
-  measures.algorithmic_energy = newmark.algorithmic_energy(
+  measures.algorithmic_energy = integrator.algorithmic_energy(
       measures.kinetic_energy, measures.strain_energy, measures.acceleration_energy);
   if (step_history.n_rows() > 0)
   {
@@ -498,7 +499,7 @@ StepGuards::Figures Simulation<dim>::guard_figures(const Measures& measures) con
     multiplier_magnitude += std::abs(contact->active_multiplier(k));
   const auto energy_at_this_step_size = [this](const Measures& state)
   {
-    return newmark.algorithmic_energy(
+    return integrator.algorithmic_energy(
         state.kinetic_energy, state.strain_energy, state.acceleration_energy);
   };
   return {time,
@@ -528,7 +529,7 @@ void Simulation<dim>::record_step(const Measures& measures,
                              measures.algorithmic_energy,
                              contact->max_penetration(displacement),
                              measures.force_imbalance,
-                             step_history.n_rows() == 0 ? 0. : newmark.time_step(),
+                             step_history.n_rows() == 0 ? 0. : integrator.time_step(),
                              static_cast<double>(cuts)};
   // Contact pressures (surface contact only): one solve per step, skipped without contact.
   const std::vector<double> pressures = surface_contact && contact->n_active() > 0
@@ -596,7 +597,7 @@ std::string Simulation<dim>::problem_fingerprint() const
   text << std::setprecision(17) << "dimension " << dim << ", " << dof_handler.n_dofs() << " DoFs, "
        << contact->n_pairs() << " contact candidates, " << model->n_bodies() << " bodies, dt "
        << parameters.time.time_step << ", maximum step cuts " << parameters.time.max_step_cuts
-       << ", beta " << newmark.beta() << ", gamma " << newmark.gamma() << ", "
+       << ", beta " << integrator.beta() << ", gamma " << integrator.gamma() << ", "
        << contact_dynamics_names().name(parameters.contact.dynamics) << ", "
        << contact_formulation_names().name(parameters.contact.formulation);
   return text.str();
@@ -736,7 +737,7 @@ Simulation<dim>::solve_step(const State& before, Measures& measures, unsigned in
   unsigned int linear_solves = 0;
   for (cuts = 0;; ++cuts)
   {
-    newmark.set_time_step(controller->step_size());
+    integrator.set_time_step(controller->step_size());
     time = controller->end_time();
     std::string failure;
     try

@@ -13,7 +13,7 @@
 #include <dyncontact/postprocess/history.h>
 #include <dyncontact/simulation/step_guards.h>
 #include <dyncontact/solver/contact_newton_solver.h>
-#include <dyncontact/time_integration/newmark.h>
+#include <dyncontact/time_integration/generalized_alpha.h>
 #include <dyncontact/time_integration/step_controller.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -211,7 +211,7 @@ private:
   const std::unique_ptr<ProblemModel<dim>> model;
   const bool is_root_rank;
   ConditionalOStream log;
-  Newmark newmark;
+  GeneralizedAlpha integrator;
   parallel::shared::Triangulation<dim> triangulation;
   const FESystem<dim> fe;
   /** The curved-cell mapping, its support points computed once from the manifolds. */

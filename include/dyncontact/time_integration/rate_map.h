@@ -10,8 +10,9 @@ namespace dyncontact
  * The Newmark relations between displacement, velocity and acceleration over one step of size dt,
  * paper eqs. (11)-(12), per component: the predictor u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n,
  * a_{n+1} = (u_{n+1} - u~) / (beta dt^2) and v_{n+1} = v_n + dt (1 - gamma) a_n + dt gamma
- * a_{n+1}. This is all a contact-dynamics treatment gets of the integrator; Newmark's vector
- * updates are these very functions applied to every DoF, so each formula exists once. The sums are
+ * a_{n+1}. This is all a contact-dynamics treatment gets of the integrator; GeneralizedAlpha's
+ * vector updates are these very functions applied to every DoF, so each formula exists once. They
+ * hold for every member of that family (its alpha_m, alpha_f enter only the balance). The sums are
  * evaluated left to right, as deal.II's Vector::add(a, V, b, W) does.
  */
 struct RateMap

@@ -1,0 +1,124 @@
+#include <dyncontact/time_integration/generalized_alpha.h>
+
+#include <cmath>
+#include <limits>
+
+namespace dyncontact
+{
+GeneralizedAlpha::GeneralizedAlpha(const TimeIntegrationParameters& parameters)
+    : family_value(Family::newmark), alpha_m_value(0.), alpha_f_value(0.),
+      beta_value(parameters.beta), gamma_value(parameters.gamma), dt(parameters.time_step)
+{
+  Assert(beta_value > 0., ExcMessage("beta > 0 is checked when the parameters are read."));
+}
+
+GeneralizedAlpha::GeneralizedAlpha(const Family family,
+                                   const double spectral_radius,
+                                   const double time_step)
+    : family_value(family), dt(time_step)
+{
+  const double rho = spectral_radius;
+  AssertThrow(time_step > 0., ExcMessage("The time step must be positive."));
+  AssertThrow(family != Family::newmark,
+              ExcMessage("Newmark is given by (beta, gamma), not by a spectral radius."));
+  const double lowest = family == Family::hht ? 0.5 : 0.;
+  AssertThrow(rho >= lowest && rho <= 1.,
+              ExcMessage("The spectral radius at infinite frequency must lie in [" +
+                         format_number(lowest) + ", 1], not " + format_number(rho) + "."));
+  // The one map from rho_inf to the coefficients (see the header for the sources).
+  switch (family)
+  {
+  case Family::hht:
+    alpha_m_value = 0.;
+    alpha_f_value = (1. - rho) / (1. + rho);
+    break;
+  case Family::bossak:
+    alpha_m_value = (rho - 1.) / (rho + 1.);
+    alpha_f_value = 0.;
+    break;
+  case Family::generalized_alpha:
+    alpha_m_value = (2. * rho - 1.) / (rho + 1.);
+    alpha_f_value = rho / (rho + 1.);
+    break;
+  case Family::newmark:
+    break;
+  }
+  // Second order for gamma = 1/2 - alpha_m + alpha_f; this beta maximizes the high-frequency
+  // dissipation (Chung & Hulbert 1993; for hht and bossak it is their original choice).
+  gamma_value = 0.5 - alpha_m_value + alpha_f_value;
+  beta_value  = 0.25 * (1. - alpha_m_value + alpha_f_value) * (1. - alpha_m_value + alpha_f_value);
+}
+
+void GeneralizedAlpha::set_time_step(const double time_step)
+{
+  Assert(time_step > 0., ExcMessage("The time step must be positive."));
+  dt = time_step;
+}
+
+double GeneralizedAlpha::inertia_factor() const
+{
+  // (1 - 0) / (1 - 0) is exactly 1, so newmark gets 1 / (beta dt^2) bit for bit.
+  return (1. - alpha_m_value) / (1. - alpha_f_value) * rate_map().da_du();
+}
+
+void GeneralizedAlpha::predict(const Vector<double>& u_n,
+                               const Vector<double>& v_n,
+                               const Vector<double>& a_n,
+                               Vector<double>& predictor) const
+{
+  const RateMap rates = rate_map();
+  predictor.reinit(u_n.size(), true);
+  for (types::global_dof_index i = 0; i < u_n.size(); ++i)
+    predictor[i] = rates.predicted_displacement(u_n[i], v_n[i], a_n[i]);
+}
+
+void GeneralizedAlpha::effective_force(const Vector<double>& external_force,
+                                       const Vector<double>& old_inertia_force,
+                                       const Vector<double>& old_internal_force,
+                                       Vector<double>& effective) const
+{
+  AssertDimension(old_inertia_force.size(), external_force.size());
+  AssertDimension(old_internal_force.size(), external_force.size());
+  effective.reinit(external_force.size(), true);
+  for (types::global_dof_index i = 0; i < external_force.size(); ++i)
+    effective[i] = (external_force[i] - alpha_m_value * old_inertia_force[i] -
+                    alpha_f_value * old_internal_force[i]) /
+                   (1. - alpha_f_value);
+}
+
+void GeneralizedAlpha::update_rates(const Vector<double>& increment,
+                                    const Vector<double>& v_n,
+                                    const Vector<double>& a_n,
+                                    Vector<double>& v_new,
+                                    Vector<double>& a_new) const
+{
+  const RateMap rates = rate_map();
+  a_new.reinit(increment.size(), true);
+  v_new.reinit(increment.size(), true);
+  for (types::global_dof_index i = 0; i < increment.size(); ++i)
+  {
+    a_new[i] = rates.acceleration(increment[i]);
+    v_new[i] = rates.velocity(v_n[i], a_n[i], a_new[i]);
+  }
+}
+
+double GeneralizedAlpha::algorithmic_energy(const double kinetic_energy,
+                                            const double strain_energy,
+                                            const double acceleration_energy,
+                                            const double residual_energy) const
+{
+  // acceleration_energy = 1/2 a.Ma, so (beta - gamma/2) dt^2/2 a.Ma = (beta - gamma/2) dt^2
+  // acceleration_energy.
+  const double energy = kinetic_energy + strain_energy +
+                        (beta_value - 0.5 * gamma_value) * dt * dt * acceleration_energy;
+  if (alpha_f_value == alpha_m_value)
+    return energy;
+  return energy + (0.5 - alpha_f_value) / (alpha_f_value - alpha_m_value) * residual_energy;
+}
+
+double GeneralizedAlpha::stability_limit() const
+{
+  return 2. * beta_value < gamma_value ? 1. / std::sqrt(gamma_value / 2. - beta_value)
+                                       : std::numeric_limits<double>::infinity();
+}
+} // namespace dyncontact
