@@ -469,11 +469,9 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
 void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Time integration");
-  deprecated_scheme = prm.get("scheme");
-  if (!deprecated_scheme.empty())
-    deprecated_scheme_names().parse(deprecated_scheme, "Time integration/scheme");
-  beta  = prm.get_double("beta");
-  gamma = prm.get_double("gamma");
+  deprecated_scheme = prm.get("scheme"); // resolved, or rejected, by resolve_and_check()
+  beta              = prm.get_double("beta");
+  gamma             = prm.get_double("gamma");
   if (!(beta > 0.))
     throw InputError("Time integration/beta = 0 is not supported: with beta = 0 the displacement "
                      "u_{n+1} is explicit and the contact constraint cannot act on it. Use "

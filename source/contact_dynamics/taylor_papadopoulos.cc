@@ -28,12 +28,13 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
         (pair.against_wall() ? 0. : 1. / lumped_mass[pair.node_b->dofs[0]]);
 
     // Eqs. (21) and (22): the multipliers of the rate constraints [[a]].n = 0 and [[v]].n = 0.
-    const double lambda_a = rates.predicted_displacement(
-                                position_jump, pair.normal_jump(v_old), pair.normal_jump(a_old)) /
-                            inverse_weight_sum;
-    const double lambda_v =
-        rates.predicted_velocity(pair.normal_jump(v_old), pair.normal_jump(a_old)) /
+    const double velocity_jump     = pair.normal_jump(v_old);
+    const double acceleration_jump = pair.normal_jump(a_old);
+    const double lambda_a =
+        rates.predicted_displacement(position_jump, velocity_jump, acceleration_jump) /
         inverse_weight_sum;
+    const double lambda_v =
+        rates.predicted_velocity(velocity_jump, acceleration_jump) / inverse_weight_sum;
 
     // Recovery of the normal rates of side a = 1 (A, sign -1) and a = 2 (B, sign +1).
     const auto correct_side = [&](const Node<dim>& node, const double sign)

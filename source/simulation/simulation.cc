@@ -168,6 +168,12 @@ namespace
 {
 /// omega dt up to which the trapezoidal rule is said to resolve a mode (period error 1/3 at 2).
 constexpr double resolved_omega_dt = 2.;
+/// Whether the trapezoidal rule follows a mode of this omega dt (its slack: Courant number 1
+/// exactly).
+bool resolved(const double omega_dt)
+{
+  return omega_dt <= resolved_omega_dt * (1. + 1e-9);
+}
 /// Slack of the stability checks, relative: a time step they suggest is printed to 6 significant
 /// digits and may round up by 5e-7; taken as given, it must pass.
 constexpr double suggestion_rounding = 1e-6;
@@ -187,7 +193,7 @@ void Simulation<dim>::size_automatic_penalty()
   // the spheres both are unresolved, the stiff penalty behaves and keeps the penetration small.
   const double body_omega_dt   = model->highest_frequency() * integrator.time_step();
   const double spring_omega_dt = penalty_spring_omega_dt();
-  if (body_omega_dt <= resolved_omega_dt * (1. + 1e-9) && spring_omega_dt > 1.)
+  if (resolved(body_omega_dt) && spring_omega_dt > 1.)
   {
     // With 2 beta < gamma the spring and the mesh together must stay below the stability limit
     // (see check_stability()); a spring softer than omega dt = 1 would buy that with a penetration
@@ -219,7 +225,7 @@ void Simulation<dim>::check_stability() const
   // A resolved mesh (omega dt <= 2, Courant number about 1) with an unresolved penalty spring: the
   // spring is the one frequency the step cannot follow, and the contact node chatters (see
   // size_automatic_penalty()).
-  if (spring_omega_dt > resolved_omega_dt && body_omega_dt <= resolved_omega_dt * (1. + 1e-9))
+  if (spring_omega_dt > resolved_omega_dt && resolved(body_omega_dt))
     log << "WARNING: the penalty spring (Contact/penalty factor = " << penalty_factor
         << ") has omega dt = " << spring_omega_dt << " while the bodies' highest mode has "
         << body_omega_dt
