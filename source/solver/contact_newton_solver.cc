@@ -1,10 +1,5 @@
 #include <dyncontact/solver/contact_newton_solver.h>
 
-#include <deal.II/base/mpi.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_solver.h>
-
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -24,90 +19,10 @@ ContactNewtonSolver<dim>::ContactNewtonSolver(
     TimerOutput& timer)
     : dof_handler(dof_handler), bodies(bodies), contact(contact), lumped_mass(lumped_mass),
       parameters(parameters), gap_tolerance(parameters.residual_tolerance * length_scale),
-      communicator(dof_handler.get_triangulation().get_communicator()), timer(timer),
-      owns_multiplier_rows(Utilities::MPI::this_mpi_process(communicator) ==
-                           Utilities::MPI::n_mpi_processes(communicator) - 1),
-      is_fixed(dof_handler.n_dofs(), false)
+      timer(timer), is_fixed(dof_handler.n_dofs(), false), system(dof_handler, contact, fixed_dofs)
 {
-  const types::global_dof_index n_dofs  = dof_handler.n_dofs();
-  const types::global_dof_index n_total = n_dofs + contact.n_pairs();
-  locally_owned_rows.set_size(n_total);
-  locally_owned_rows.add_indices(dof_handler.locally_owned_dofs());
-  if (owns_multiplier_rows)
-    locally_owned_rows.add_range(n_dofs, n_total);
-  locally_owned_rows.compress();
   for (const auto dof : fixed_dofs)
-  {
     is_fixed[dof] = true;
-    if (locally_owned_rows.is_element(dof))
-      locally_owned_fixed_rows.push_back(dof);
-  }
-
-  // Rows this rank writes: those of its cells and, on the last rank, the constraint rows with the
-  // DoFs they couple to. Each such row gets its full pattern from every cell touching it (all
-  // cells are known on every rank of the shared triangulation).
-  std::vector<types::global_dof_index> local_dofs(dof_handler.get_fe().n_dofs_per_cell());
-  IndexSet written_rows(n_total);
-  written_rows.add_indices(locally_owned_rows);
-  for (const auto& cell : dof_handler.active_cell_iterators())
-    if (cell->is_locally_owned())
-    {
-      cell->get_dof_indices(local_dofs);
-      written_rows.add_indices(local_dofs.begin(), local_dofs.end());
-    }
-  DynamicSparsityPattern contact_couplings(n_total);
-  contact.add_to_sparsity(contact_couplings, n_dofs);
-  if (owns_multiplier_rows)
-    for (types::global_dof_index row = n_dofs; row < n_total; ++row)
-      for (auto entry = contact_couplings.begin(row); entry != contact_couplings.end(row); ++entry)
-        written_rows.add_index(entry->column());
-  written_rows.compress();
-
-  DynamicSparsityPattern sparsity(n_total, n_total, written_rows);
-  for (const auto& cell : dof_handler.active_cell_iterators())
-  {
-    cell->get_dof_indices(local_dofs);
-    for (const auto row : local_dofs)
-      if (written_rows.is_element(row))
-        for (const auto column : local_dofs)
-          sparsity.add(row, column);
-  }
-  for (const auto row : written_rows)
-    for (auto entry = contact_couplings.begin(row); entry != contact_couplings.end(row); ++entry)
-      sparsity.add(row, entry->column());
-  matrix.reinit(locally_owned_rows, locally_owned_rows, sparsity, communicator);
-}
-
-template <int dim>
-Vector<double>
-ContactNewtonSolver<dim>::solve_linear_system(const Vector<double>& right_hand_side) const
-{
-  TrilinosWrappers::MPI::Vector distributed_rhs(locally_owned_rows, communicator);
-  TrilinosWrappers::MPI::Vector distributed_solution(locally_owned_rows, communicator);
-  for (const auto row : locally_owned_rows)
-    distributed_rhs[row] = right_hand_side[row];
-  distributed_rhs.compress(VectorOperation::insert);
-  try
-  {
-    SolverControl solver_control;
-    const bool parallel = Utilities::MPI::n_mpi_processes(communicator) > 1;
-    TrilinosWrappers::SolverDirect::AdditionalData data(false,
-                                                        parallel ? "Amesos_Mumps" : "Amesos_Klu");
-    TrilinosWrappers::SolverDirect direct_solver(solver_control, data);
-    direct_solver.solve(matrix, distributed_solution, distributed_rhs);
-  }
-  catch (const std::exception& error)
-  {
-    throw SolverFailure(std::string("the direct solver (Amesos) failed: ") + error.what());
-  }
-  // Every rank needs the whole solution: import all entries.
-  TrilinosWrappers::MPI::Vector whole(
-      locally_owned_rows, complete_index_set(right_hand_side.size()), communicator);
-  whole = distributed_solution;
-  Vector<double> solution(right_hand_side.size());
-  for (types::global_dof_index i = 0; i < solution.size(); ++i)
-    solution[i] = whole[i];
-  return solution;
 }
 
 template <int dim>
@@ -173,40 +88,37 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     try
     {
       if (with_tangent)
-        matrix = 0.;
+        system.start_assembly();
       bodies.assemble_internal_force(displacement,
                                      internal_force_values,
-                                     with_tangent ? &matrix : nullptr,
+                                     with_tangent ? &system.matrix() : nullptr,
                                      &strain_energy_value);
     }
     catch (const SolverFailure& failure)
     {
       evaluation_failure = failure.what();
       if (with_tangent)
-        matrix.compress(VectorOperation::add); // flush entries added before the failure
+        system.abandon_assembly(); // flush entries added before the failure
     }
     if (evaluation_failure.empty())
     {
       for (types::global_dof_index i = 0; i < n_dofs; ++i)
       {
         inertia[i] = inertia_factor * lumped_mass[i] * increment[i];
-        if (with_tangent && dof_handler.locally_owned_dofs().is_element(i))
-          matrix.add(i, i, inertia_factor * lumped_mass[i]);
+        if (with_tangent && system.owns_row(i))
+          system.matrix().add(i, i, inertia_factor * lumped_mass[i]);
       }
       contact_force = 0.;
       contact.add_contact_forces(contact_force);
-      contact.assemble_constraint_rows(displacement,
-                                       inactive_diagonal,
-                                       with_tangent && owns_multiplier_rows ? &matrix : nullptr,
-                                       constraint_residual);
+      contact.assemble_constraint_rows(
+          displacement,
+          inactive_diagonal,
+          with_tangent && system.owns_multiplier_rows() ? &system.matrix() : nullptr,
+          constraint_residual);
       if (with_tangent)
       {
-        matrix.compress(VectorOperation::add);
-        matrix.clear_rows(locally_owned_fixed_rows, inactive_diagonal);
-        double largest_diagonal = 0.;
-        for (const auto row : dof_handler.locally_owned_dofs())
-          largest_diagonal = std::max(largest_diagonal, std::abs(matrix.diag_element(row)));
-        largest_tangent_diagonal = Utilities::MPI::max(largest_diagonal, communicator);
+        system.finish_assembly(inactive_diagonal);
+        largest_tangent_diagonal = system.largest_displacement_diagonal();
       }
 
       double force_residual_squared = 0.;
@@ -297,7 +209,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     residual *= -1.;
     {
       TimerOutput::Scope solve_scope(timer, "linear solve");
-      newton_update = solve_linear_system(residual);
+      newton_update = system.solve(residual);
     }
     ++linear_solves;
     before_update = StateBeforeUpdate{increment, contact.state(), merit};

@@ -4,12 +4,10 @@
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/solver/saddle_point_system.h>
 
-#include <deal.II/base/index_set.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <vector>
@@ -50,7 +48,8 @@ namespace dyncontact
  * the last rank; the direct solver is Amesos KLU on one rank and Amesos MUMPS on several. Vectors
  * passed in and out are whole on every rank.
  *
- * It owns the matrix and its fixed sparsity pattern; it does not know Newmark's update formulas.
+ * The matrix, its fixed sparsity pattern and the direct solve are a SaddlePointSystem's. It does
+ * not know Newmark's update formulas.
  */
 template <int dim>
 class ContactNewtonSolver
@@ -106,22 +105,15 @@ public:
   double strain_energy() const { return strain_energy_value; }
 
 private:
-  /** Solves matrix * solution = right_hand_side; both vectors whole on every rank. */
-  Vector<double> solve_linear_system(const Vector<double>& right_hand_side) const;
-
   const DoFHandler<dim>& dof_handler;
   const ElasticBodies<dim>& bodies;
   ContactConstraints<dim>& contact;
   const Vector<double>& lumped_mass;
   const NewtonParameters parameters;
   const double gap_tolerance;
-  const MPI_Comm communicator;
   TimerOutput& timer;
-  const bool owns_multiplier_rows;
   std::vector<bool> is_fixed;
-  std::vector<types::global_dof_index> locally_owned_fixed_rows;
-  IndexSet locally_owned_rows;
-  TrilinosWrappers::SparseMatrix matrix;
+  SaddlePointSystem<dim> system;
   Vector<double> internal_force_values;
   /** max diag(K_eff) at the last tangent assembly (0: none yet), for the force scale. */
   double largest_tangent_diagonal = 0.;
