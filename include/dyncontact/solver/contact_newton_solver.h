@@ -4,12 +4,11 @@
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/solver/dynamic_residual.h>
+#include <dyncontact/solver/saddle_point_system.h>
 
-#include <deal.II/base/index_set.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
 
 #include <vector>
@@ -46,11 +45,16 @@ namespace dyncontact
  * be evaluated (an inverted element) or grows while the active set stays the same, the residual
  * measured as the force residual together with the active gaps times the largest tangent diagonal.
  *
- * Parallel layout: rows of the matrix are distributed like the DoFs, the multiplier rows belong to
- * the last rank; the direct solver is Amesos KLU on every number of ranks (bitwise reproducible;
- * MUMPS was not, run to run, on 2 ranks). Vectors passed in and out are whole on every rank.
+ * Vectors passed in and out are whole on every rank (the parallel layout of the matrix and the
+ * direct solver are SaddlePointSystem's).
  *
- * It owns the matrix and its fixed sparsity pattern; it does not know Newmark's update formulas.
+ * The class is the Newton driver of three units: a SaddlePointSystem (the matrix, its fixed
+ * sparsity pattern and the direct solve), a DynamicResidual (the residual, the tangent and the
+ * figures of the convergence test) and, here, the iteration itself: initial-guess evaluation, the
+ * restart from u_n, the line search, the active-set updates, the convergence test and the error
+ * messages. It keeps the name ContactNewtonSolver (rather than a name of the method alone) because
+ * it is what Simulation builds and calls, with the constructor and solve() unchanged, and the
+ * checkpoint's tangent scale is documented as its own. It does not know Newmark's update formulas.
  */
 template <int dim>
 class ContactNewtonSolver
@@ -92,39 +96,59 @@ public:
                Vector<double>& increment);
 
   /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */
-  const Vector<double>& internal_force() const { return internal_force_values; }
+  const Vector<double>& internal_force() const { return residual.internal_force(); }
 
   /**
    * max diag(K_eff) of the last tangent (0: none yet), which scales the round-off floor and decides
    * whether a step's first evaluation needs a tangent; a checkpoint keeps it so that a resumed run
    * repeats the uninterrupted one exactly.
    */
-  double tangent_scale() const { return largest_tangent_diagonal; }
-  void set_tangent_scale(const double scale) { largest_tangent_diagonal = scale; }
+  double tangent_scale() const { return residual.tangent_scale(); }
+  void set_tangent_scale(const double scale) { residual.set_tangent_scale(scale); }
 
   /** Strain energy at the same displacement as internal_force(). */
-  double strain_energy() const { return strain_energy_value; }
+  double strain_energy() const { return residual.strain_energy(); }
 
 private:
-  /** Solves matrix * solution = right_hand_side; both vectors whole on every rank. */
-  Vector<double> solve_linear_system(const Vector<double>& right_hand_side) const;
+  /** One step's Newton iterate and the line search's memory (defined in the source file). */
+  struct Iteration;
+  /** An evaluation of the residual: its figures, or the message of the failure that stopped it. */
+  struct Evaluation;
 
-  const DoFHandler<dim>& dof_handler;
-  const ElasticBodies<dim>& bodies;
+  /** Sets the displacement to predictor + increment and updates the active set there. */
+  void enter(Iteration& iteration);
+
+  /** The residual (with the tangent if `with_tangent`) at the iterate; catches SolverFailure. */
+  Evaluation evaluate(const Iteration& iteration, bool with_tangent);
+
+  /** The convergence test of the class documentation. */
+  bool has_converged(const Iteration& iteration,
+                     const typename DynamicResidual<dim>::Figures& figures) const;
+
+  /** Whether the last update is to be halved: its end failed or its merit grew. */
+  bool must_backtrack(const Iteration& iteration, const Evaluation& evaluation) const;
+
+  /**
+   * Throws SolverFailure with the messages of the class: an evaluation that failed or a residual
+   * that is not finite (after the line search or at u_n), or the iteration limit reached.
+   */
+  void throw_if_stuck(const Iteration& iteration, const Evaluation& evaluation) const;
+
+  /** Solves for the Newton update at the iterate and takes all of it. */
+  void take_newton_update(Iteration& iteration, const typename DynamicResidual<dim>::Figures& f);
+
+  /**
+   * Moves to the state before the update plus step_length times the update (increment and
+   * multipliers) and updates the active set there with the force tolerance of `reference_force`.
+   */
+  void move_along_update(Iteration& iteration, double reference_force);
+
   ContactConstraints<dim>& contact;
-  const Vector<double>& lumped_mass;
   const NewtonParameters parameters;
   const double gap_tolerance;
-  const MPI_Comm communicator;
   TimerOutput& timer;
-  const bool owns_multiplier_rows;
-  std::vector<bool> is_fixed;
-  std::vector<types::global_dof_index> locally_owned_fixed_rows;
-  IndexSet locally_owned_rows;
-  TrilinosWrappers::SparseMatrix matrix;
-  Vector<double> internal_force_values;
-  /** max diag(K_eff) at the last tangent assembly (0: none yet), for the force scale. */
-  double largest_tangent_diagonal = 0.;
-  double strain_energy_value      = 0.;
+  const types::global_dof_index n_dofs;
+  SaddlePointSystem<dim> system;
+  DynamicResidual<dim> residual;
 };
 } // namespace dyncontact

@@ -1,0 +1,137 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/solver/saddle_point_system.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * The residual of one implicit time step with contact and its tangent: for a displacement
+ * u = u~ + increment (u~ the Newmark predictor),
+ *
+ *   r = [ c M (u - u~) + Q(u) - W - G^T lambda ;  constraint rows of ContactConstraints ]
+ *
+ * (n_dofs force rows, zero at fixed DoFs, then one row per candidate pair), with c = 1/(beta dt^2),
+ * M the lumped mass, Q(u) the internal force of the ElasticBodies, W the external force and
+ * G^T lambda the contact force of the multipliers the contact layer holds. The tangent, if asked
+ * for, is the symmetric saddle-point matrix [K_eff, -G^T; -G, -D] with K_eff = c M + dQ/du,
+ * assembled into a SaddlePointSystem, whose fixed rows get the inactive pairs' diagonal c mean(M).
+ * It also returns the figures Newton's convergence test and line search need (see Figures).
+ *
+ * It lives in the solver module rather than in discretization: it combines the bodies
+ * (discretization) with the contact layer (which itself builds on discretization) and the matrix
+ * of the saddle-point system, so it belongs above all three.
+ *
+ * State: Q(u) and the strain energy of the last evaluation, and the tangent scale max diag(K_eff)
+ * of the last assembled tangent. It does not solve, update the active set or move the normals.
+ */
+template <int dim>
+class DynamicResidual
+{
+public:
+  /** The data of one time step's equation, fixed during its Newton iteration. */
+  struct Step
+  {
+    const Vector<double>& predictor;      ///< u~ [length], n_dofs entries
+    double inertia_factor;                ///< c = 1/(beta dt^2) [1/time^2]
+    const Vector<double>& external_force; ///< W at t_{n+1} [force], n_dofs entries
+  };
+
+  /** The figures of one evaluation for Newton's convergence test and line search. */
+  struct Figures
+  {
+    /** |r_u|, the l2 norm of the force rows (fixed DoFs excluded) [force]. */
+    double force_residual;
+    /**
+     * The reference force |Q(u)| + |W| + |G^T lambda| (elastic, external and contact forces; not
+     * the inertia, whose unresolved high-frequency part can be arbitrarily large) [force].
+     */
+    double reference_force;
+    /**
+     * The round-off floor 1e3 eps (max diag(K_eff) |u| + |c M (u - u~)|): the terms that cancel in
+     * K u and c M u, which no tolerance can go under [force].
+     */
+    double round_off_floor;
+    /** max |constraint row residual| over the active pairs, 0 if none [length]. */
+    double constraint_violation;
+    /**
+     * The line search's measure of the residual: sqrt(|r_u|^2 + sum_k (s_k r_k)^2) over the
+     * constraint rows r_k, with s_k = max diag(K_eff) for active pairs (a gap turned into a force)
+     * and 1 for inactive ones.
+     */
+    double merit;
+  };
+
+  /**
+   * `lumped_mass` (n_dofs entries, the diagonal of M) and `contact` are referenced, not copied,
+   * and must outlive this object; `fixed_dofs` (indices < n_dofs) get a zero force row.
+   */
+  DynamicResidual(const ElasticBodies<dim>& bodies,
+                  const ContactConstraints<dim>& contact,
+                  const Vector<double>& lumped_mass,
+                  const std::vector<types::global_dof_index>& fixed_dofs);
+
+  /**
+   * Evaluates the residual at `displacement` = step.predictor + `increment` (both n_dofs
+   * entries) with the multipliers and active set the contact layer holds, and, if `tangent` is
+   * not null, assembles the tangent into it (zeroed first) and records max diag(K_eff) as the
+   * tangent scale. The residual is then available from residual(). Without a tangent the figures
+   * use the tangent scale of the last assembly (tangent_scale()).
+   *
+   * Throws the SolverFailure of ElasticBodies::assemble_internal_force() (an inverted element) as
+   * it is, after flushing the entries assembled so far (collectively); the residual, internal
+   * force and figures are then not meaningful.
+   */
+  Figures evaluate(const Step& step,
+                   const Vector<double>& increment,
+                   const Vector<double>& displacement,
+                   SaddlePointSystem<dim>* tangent);
+
+  /** The residual of the last evaluation: n_dofs force rows, then n_pairs constraint rows. */
+  const Vector<double>& residual() const { return residual_values; }
+
+  /** Q(u) at the displacement of the last evaluation [force], n_dofs entries. */
+  const Vector<double>& internal_force() const { return internal_force_values; }
+
+  /** Strain energy at the displacement of the last evaluation [energy]. */
+  double strain_energy() const { return strain_energy_value; }
+
+  /**
+   * max diag(K_eff) of the last tangent [force/length] (0: none yet), which scales the round-off
+   * floor and the merit's constraint rows; set_tangent_scale() restores it from a checkpoint.
+   */
+  double tangent_scale() const { return largest_tangent_diagonal; }
+  void set_tangent_scale(const double scale) { largest_tangent_diagonal = scale; }
+
+private:
+  /**
+   * Q(u), c M (u - u~), G^T lambda and the constraint rows into the work vectors and, if
+   * `tangent` is not null, the tangent into it; see evaluate().
+   */
+  void assemble(const Step& step,
+                const Vector<double>& increment,
+                const Vector<double>& displacement,
+                SaddlePointSystem<dim>* tangent);
+
+  /** The residual vector and the figures from the work vectors of assemble(). */
+  Figures residual_and_figures(const Step& step, const Vector<double>& displacement);
+
+  const ElasticBodies<dim>& bodies;
+  const ContactConstraints<dim>& contact;
+  const Vector<double>& lumped_mass;
+  std::vector<bool> is_fixed;
+  Vector<double> internal_force_values;
+  Vector<double> inertia_force;
+  Vector<double> contact_force;
+  Vector<double> constraint_residual;
+  Vector<double> residual_values;
+  double largest_tangent_diagonal = 0.;
+  double strain_energy_value      = 0.;
+};
+} // namespace dyncontact

@@ -1,0 +1,126 @@
+#include <dyncontact/solver/dynamic_residual.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace dyncontact
+{
+template <int dim>
+DynamicResidual<dim>::DynamicResidual(const ElasticBodies<dim>& bodies,
+                                      const ContactConstraints<dim>& contact,
+                                      const Vector<double>& lumped_mass,
+                                      const std::vector<types::global_dof_index>& fixed_dofs)
+    : bodies(bodies), contact(contact), lumped_mass(lumped_mass),
+      is_fixed(lumped_mass.size(), false), inertia_force(lumped_mass.size()),
+      contact_force(lumped_mass.size()), constraint_residual(contact.n_pairs()),
+      residual_values(lumped_mass.size() + contact.n_pairs())
+{
+  for (const auto dof : fixed_dofs)
+    is_fixed[dof] = true;
+}
+
+template <int dim>
+typename DynamicResidual<dim>::Figures
+DynamicResidual<dim>::evaluate(const Step& step,
+                               const Vector<double>& increment,
+                               const Vector<double>& displacement,
+                               SaddlePointSystem<dim>* tangent)
+{
+  assemble(step, increment, displacement, tangent);
+  return residual_and_figures(step, displacement);
+}
+
+template <int dim>
+void DynamicResidual<dim>::assemble(const Step& step,
+                                    const Vector<double>& increment,
+                                    const Vector<double>& displacement,
+                                    SaddlePointSystem<dim>* tangent)
+{
+  // The diagonal of an inactive pair's trivial row lambda = 0, also that of a fixed DoF's row:
+  // the mean inertia stiffness, the scale of K_eff's diagonal in a step with omega dt >> 1.
+  const double inactive_diagonal = step.inertia_factor * lumped_mass.mean_value();
+  try
+  {
+    if (tangent != nullptr)
+      tangent->start_assembly();
+    bodies.assemble_internal_force(displacement,
+                                   internal_force_values,
+                                   tangent != nullptr ? &tangent->matrix() : nullptr,
+                                   &strain_energy_value);
+  }
+  catch (const SolverFailure&)
+  {
+    if (tangent != nullptr)
+      tangent->abandon_assembly(); // flush entries added before the failure
+    throw;
+  }
+  for (types::global_dof_index i = 0; i < inertia_force.size(); ++i)
+  {
+    inertia_force[i] = step.inertia_factor * lumped_mass[i] * increment[i];
+    if (tangent != nullptr && tangent->owns_row(i))
+      tangent->matrix().add(i, i, step.inertia_factor * lumped_mass[i]);
+  }
+  contact_force = 0.;
+  contact.add_contact_forces(contact_force);
+  contact.assemble_constraint_rows(
+      displacement,
+      inactive_diagonal,
+      tangent != nullptr && tangent->owns_multiplier_rows() ? &tangent->matrix() : nullptr,
+      constraint_residual);
+  if (tangent != nullptr)
+  {
+    tangent->finish_assembly(inactive_diagonal);
+    largest_tangent_diagonal = tangent->largest_displacement_diagonal();
+  }
+}
+
+template <int dim>
+typename DynamicResidual<dim>::Figures
+DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double>& displacement)
+{
+  const types::global_dof_index n_dofs = inertia_force.size();
+  const unsigned int n_pairs           = constraint_residual.size();
+  // Round-off of a force evaluated from displacements of size |u|, relative: a thousand units of
+  // double precision, far below any tolerance a user may set (>= 1e-16 relative to the forces).
+  constexpr double roundoff_factor = 1e3 * std::numeric_limits<double>::epsilon();
+  double force_residual_squared    = 0.;
+  for (types::global_dof_index i = 0; i < n_dofs; ++i)
+  {
+    residual_values[i] = is_fixed[i] ? 0.
+                                     : inertia_force[i] + internal_force_values[i] -
+                                           step.external_force[i] - contact_force[i];
+    force_residual_squared += residual_values[i] * residual_values[i];
+  }
+  for (unsigned int k = 0; k < n_pairs; ++k)
+    residual_values[n_dofs + k] = constraint_residual[k];
+  Figures figures{};
+  // The reference force: the elastic, external and contact forces, not the inertia. At time
+  // steps far beyond the periods of the small elements of a contact zone their inertia
+  // c M (u - u~) is huge and unresolved; measured against it, a residual as large as the
+  // contact force itself passed a loose tolerance. Below the reference, a round-off floor:
+  // the terms that cancel in K u and c M u (a rigid translation has Q = 0 up to round-off
+  // of the size eps max diag(K_eff) |u|), which no tolerance can go under.
+  figures.reference_force =
+      internal_force_values.l2_norm() + step.external_force.l2_norm() + contact_force.l2_norm();
+  figures.round_off_floor = roundoff_factor * (largest_tangent_diagonal * displacement.l2_norm() +
+                                               inertia_force.l2_norm());
+  figures.force_residual  = std::sqrt(force_residual_squared);
+  for (unsigned int k = 0; k < n_pairs; ++k)
+    if (contact.is_active(k))
+      figures.constraint_violation =
+          std::max(figures.constraint_violation, std::abs(constraint_residual[k]));
+  // The line search's merit: the force residual and the active constraints' violations
+  // turned into forces by the stiffness scale; without the latter a step that closes a gap
+  // but raises a small nonlinear force residual would be rejected forever.
+  double constraint_force_squared = 0.;
+  for (unsigned int k = 0; k < n_pairs; ++k)
+    constraint_force_squared += std::pow(
+        (contact.is_active(k) ? largest_tangent_diagonal : 1.) * constraint_residual[k], 2);
+  figures.merit = std::sqrt(force_residual_squared + constraint_force_squared);
+  return figures;
+}
+
+template class DynamicResidual<1>;
+template class DynamicResidual<2>;
+} // namespace dyncontact
