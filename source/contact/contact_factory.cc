@@ -2,12 +2,14 @@
 
 namespace dyncontact
 {
+namespace
+{
 template <int dim>
-Contact<dim> create_contact(const ContactDescription<dim>& description,
-                            const DoFHandler<dim>& dof_handler,
-                            const Kinematics<dim>& kinematics,
-                            const NodeIndex<dim>& nodes,
-                            const ContactParameters& parameters)
+Contact<dim> build_contact(const ContactDescription<dim>& description,
+                           const DoFHandler<dim>& dof_handler,
+                           const Kinematics<dim>& kinematics,
+                           const NodeIndex<dim>& nodes,
+                           const ContactParameters& parameters)
 {
   Contact<dim> contact;
   if (description.surface_pair)
@@ -45,15 +47,40 @@ Contact<dim> create_contact(const ContactDescription<dim>& description,
   contact.constraints = std::make_unique<ContactConstraints<dim>>(pairs, parameters.formulation);
   return contact;
 }
+} // namespace
+
+template <int dim>
+Contact<dim> create_contact(const ContactDescription<dim>& description,
+                            const DoFHandler<dim>& dof_handler,
+                            const Kinematics<dim>& kinematics,
+                            const NodeIndex<dim>& nodes,
+                            const ContactParameters& parameters,
+                            const std::optional<PenaltySizingInput>& sizing)
+{
+  Contact<dim> contact   = build_contact(description, dof_handler, kinematics, nodes, parameters);
+  contact.penalty_factor = parameters.penalty_factor;
+  contact.penalty_lowered_to_resolve_springs = false;
+  if (parameters.formulation == ContactFormulation::penalty && parameters.automatic_penalty)
+  {
+    AssertThrow(sizing.has_value(),
+                ExcMessage("Contact/penalty factor = auto needs the lumped mass and time step"));
+    const double scale = size_automatic_penalty(*contact.constraints, *sizing);
+    contact.penalty_factor *= scale;
+    contact.penalty_lowered_to_resolve_springs = scale < 1.;
+  }
+  return contact;
+}
 
 template Contact<1> create_contact(const ContactDescription<1>&,
                                    const DoFHandler<1>&,
                                    const Kinematics<1>&,
                                    const NodeIndex<1>&,
-                                   const ContactParameters&);
+                                   const ContactParameters&,
+                                   const std::optional<PenaltySizingInput>&);
 template Contact<2> create_contact(const ContactDescription<2>&,
                                    const DoFHandler<2>&,
                                    const Kinematics<2>&,
                                    const NodeIndex<2>&,
-                                   const ContactParameters&);
+                                   const ContactParameters&,
+                                   const std::optional<PenaltySizingInput>&);
 } // namespace dyncontact

@@ -38,6 +38,59 @@ interpolate_displacement(const FEValues<dim>& fe_values,
   }
   return result;
 }
+
+/** One cell's force vector and tangent matrix, with the work arrays of their integration. */
+struct CellContribution
+{
+  explicit CellContribution(const unsigned int n_local)
+      : force(n_local), tangent(n_local, n_local), variations(n_local),
+        tangent_times_variation(n_local)
+  {
+  }
+
+  Vector<double> force;
+  FullMatrix<double> tangent;
+  std::vector<Tensor<2, 3>> variations;
+  std::vector<Tensor<2, 3>> tangent_times_variation;
+};
+
+/**
+ * Adds one quadrature point's share to a cell's internal force, P : delta F_i dV, and, if
+ * `with_tangent`, to its tangent, delta F_i : dP/dF : delta F_j dV; F is the deformation gradient
+ * at the point, X its reference position.
+ */
+template <int dim>
+void add_point_contribution(const Kinematics<dim>& kinematics,
+                            const Material& material,
+                            const FEValues<dim>& fe_values,
+                            const unsigned int q,
+                            const Tensor<2, 3>& F,
+                            const double dV,
+                            const bool with_tangent,
+                            CellContribution& cell)
+{
+  const FiniteElement<dim>& fe = fe_values.get_fe();
+  const unsigned int n_local   = fe.n_dofs_per_cell();
+  const Point<dim>& X          = fe_values.quadrature_point(q);
+  const Tensor<2, 3> P         = material.first_piola_kirchhoff_stress(F);
+  for (unsigned int i = 0; i < n_local; ++i)
+    cell.variations[i] =
+        kinematics.deformation_gradient_variation(fe.system_to_component_index(i).first,
+                                                  fe_values.shape_value(i, q),
+                                                  fe_values.shape_grad(i, q),
+                                                  X);
+  for (unsigned int i = 0; i < n_local; ++i)
+    cell.force[i] += scalar_product(P, cell.variations[i]) * dV;
+  if (!with_tangent)
+    return;
+  const Tensor<4, 3> dP_dF = material.stress_tangent(F);
+  for (unsigned int j = 0; j < n_local; ++j)
+    cell.tangent_times_variation[j] = double_contract<2, 0, 3, 1>(dP_dF, cell.variations[j]);
+  for (unsigned int i = 0; i < n_local; ++i)
+    for (unsigned int j = 0; j < n_local; ++j)
+      cell.tangent(i, j) +=
+          scalar_product(cell.variations[i], cell.tangent_times_variation[j]) * dV;
+}
 } // namespace
 
 template <int dim>
@@ -138,10 +191,7 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
                               update_JxW_values);
   const unsigned int n_local = fe.n_dofs_per_cell();
   std::vector<types::global_dof_index> local_dofs(n_local);
-  Vector<double> cell_force(n_local);
-  FullMatrix<double> cell_tangent(n_local, n_local);
-  std::vector<Tensor<2, 3>> variations(n_local);
-  std::vector<Tensor<2, 3>> tangent_times_variation(n_local);
+  CellContribution cell_contribution(n_local);
 
   if (internal_force != nullptr)
     internal_force->reinit(dof_handler.n_dofs());
@@ -158,9 +208,9 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
         continue;
       fe_values.reinit(cell);
       cell->get_dof_indices(local_dofs);
-      cell_force               = 0.;
-      cell_tangent             = 0.;
-      const Material& material = *bodies[cell->material_id()].material;
+      cell_contribution.force   = 0.;
+      cell_contribution.tangent = 0.;
+      const Material& material  = *bodies[cell->material_id()].material;
       for (unsigned int q = 0; q < quadrature.size(); ++q)
       {
         const Point<dim>& X = fe_values.quadrature_point(q);
@@ -170,33 +220,15 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
         const double dV      = fe_values.JxW(q) * kinematics.measure_factor(X, cell->material_id());
         if (strain_energy != nullptr)
           *strain_energy += material.strain_energy_density(F) * dV;
-        if (internal_force == nullptr && tangent == nullptr)
-          continue;
-
-        const Tensor<2, 3> P = material.first_piola_kirchhoff_stress(F);
-        for (unsigned int i = 0; i < n_local; ++i)
-          variations[i] =
-              kinematics.deformation_gradient_variation(fe.system_to_component_index(i).first,
-                                                        fe_values.shape_value(i, q),
-                                                        fe_values.shape_grad(i, q),
-                                                        X);
-        for (unsigned int i = 0; i < n_local; ++i)
-          cell_force[i] += scalar_product(P, variations[i]) * dV;
-        if (tangent != nullptr)
-        {
-          const Tensor<4, 3> dP_dF = material.stress_tangent(F);
-          for (unsigned int j = 0; j < n_local; ++j)
-            tangent_times_variation[j] = double_contract<2, 0, 3, 1>(dP_dF, variations[j]);
-          for (unsigned int i = 0; i < n_local; ++i)
-            for (unsigned int j = 0; j < n_local; ++j)
-              cell_tangent(i, j) += scalar_product(variations[i], tangent_times_variation[j]) * dV;
-        }
+        if (internal_force != nullptr || tangent != nullptr)
+          add_point_contribution(
+              kinematics, material, fe_values, q, F, dV, tangent != nullptr, cell_contribution);
       }
       if (internal_force != nullptr)
         for (unsigned int i = 0; i < n_local; ++i)
-          (*internal_force)[local_dofs[i]] += cell_force[i];
+          (*internal_force)[local_dofs[i]] += cell_contribution.force[i];
       if (tangent != nullptr)
-        tangent->add(local_dofs, cell_tangent);
+        tangent->add(local_dofs, cell_contribution.tangent);
     }
   }
   catch (const SolverFailure& error)

@@ -1,6 +1,8 @@
 #include <dyncontact/contact/contact_factory.h>
+#include <dyncontact/contact/penalty_sizing.h>
 #include <dyncontact/simulation/interruption.h>
 #include <dyncontact/simulation/simulation.h>
+#include <dyncontact/time_integration/mode_resolution.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_q.h>
@@ -66,6 +68,16 @@ std::vector<std::string> Simulation<dim>::history_columns() const
 template <int dim>
 void Simulation<dim>::setup()
 {
+  build_discretization();
+  build_contact_and_solver();
+  index_dofs();
+  schedule_and_log();
+  check_stability();
+}
+
+template <int dim>
+void Simulation<dim>::build_discretization()
+{
   model->create_triangulation(triangulation);
   mapping.initialize(MappingQ<dim>(model->element_degree()), triangulation);
   dof_handler.reinit(triangulation);
@@ -78,11 +90,24 @@ void Simulation<dim>::setup()
   fixed_dofs = model->fixed_dofs(*nodes);
   loads      = std::make_unique<SurfaceTractions<dim>>(
       dof_handler, mapping, *kinematics, model->surface_tractions());
-  Contact<dim> built = create_contact(
-      model->contact_description(*nodes), dof_handler, *kinematics, *nodes, parameters.contact);
-  surface_contact  = std::move(built.surfaces);
-  contact          = std::move(built.constraints);
-  contact_dynamics = create_contact_dynamics<dim>(parameters.contact.dynamics);
+}
+
+template <int dim>
+void Simulation<dim>::build_contact_and_solver()
+{
+  const PenaltySizingInput sizing{
+      mass, integrator.time_step(), model->highest_frequency() * integrator.time_step()};
+  Contact<dim> built = create_contact(model->contact_description(*nodes),
+                                      dof_handler,
+                                      *kinematics,
+                                      *nodes,
+                                      parameters.contact,
+                                      sizing);
+  surface_contact    = std::move(built.surfaces);
+  contact            = std::move(built.constraints);
+  penalty_factor     = built.penalty_factor;
+  penalty_lowered    = built.penalty_lowered_to_resolve_springs;
+  contact_dynamics   = create_contact_dynamics<dim>(parameters.contact.dynamics);
   solver =
       std::make_unique<ContactNewtonSolver<dim>>(dof_handler,
                                                  *bodies,
@@ -92,6 +117,11 @@ void Simulation<dim>::setup()
                                                  parameters.newton,
                                                  GridTools::minimal_cell_diameter(triangulation),
                                                  timer);
+}
+
+template <int dim>
+void Simulation<dim>::index_dofs()
+{
   monitors                       = model->monitor_nodes(*nodes);
   const Tensor<1, dim> direction = model->impact_direction();
   dof_body.assign(dof_handler.n_dofs(), 0);
@@ -122,7 +152,11 @@ void Simulation<dim>::setup()
                                              distance_from_axis(b.node_a.position);
                                     }) -
                    pairs.begin();
+}
 
+template <int dim>
+void Simulation<dim>::schedule_and_log()
+{
   const double dt = parameters.time.time_step;
   n_steps         = parameters.time.n_steps();
   for (const double profile_time : parameters.output.profile_times)
@@ -143,89 +177,29 @@ void Simulation<dim>::setup()
         << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
   if (is_root_rank)
     model->print_summary(log.get_stream(), dt);
-  size_automatic_penalty();
-  check_stability();
-}
-
-template <int dim>
-double Simulation<dim>::penalty_spring_omega_dt() const
-{
-  double spring_omega_dt = 0.;
-  if (parameters.contact.formulation == ContactFormulation::penalty)
-    for (const auto& pair : contact->candidate_pairs())
-    {
-      const double mass_a  = mass[pair.node_a.dofs[0]];
-      const double reduced = pair.against_wall() ? mass_a
-                                                 : mass_a * mass[pair.node_b->dofs[0]] /
-                                                       (mass_a + mass[pair.node_b->dofs[0]]);
-      spring_omega_dt      = std::max(
-          spring_omega_dt, integrator.time_step() * std::sqrt(pair.penalty_stiffness / reduced));
-    }
-  return spring_omega_dt;
+  if (parameters.contact.formulation == ContactFormulation::penalty &&
+      parameters.contact.automatic_penalty)
+    log << "  penalty factor (auto): " << penalty_factor
+        << ", stiffest contact spring omega dt = " << penalty_spring_omega_dt(*contact, mass, dt)
+        << ", bodies' highest mode omega dt = " << model->highest_frequency() * dt << "\n";
 }
 
 namespace
 {
-/// omega dt up to which the trapezoidal rule is said to resolve a mode (period error 1/3 at 2).
-constexpr double resolved_omega_dt = 2.;
-/// Whether the trapezoidal rule follows a mode of this omega dt (its slack: Courant number 1
-/// exactly).
-bool resolved(const double omega_dt)
-{
-  return omega_dt <= resolved_omega_dt * (1. + 1e-9);
-}
 /// Slack of the stability checks, relative: a time step they suggest is printed to 6 significant
 /// digits and may round up by 5e-7; taken as given, it must pass.
 constexpr double suggestion_rounding = 1e-6;
 } // namespace
 
 template <int dim>
-void Simulation<dim>::size_automatic_penalty()
-{
-  penalty_factor = parameters.contact.penalty_factor;
-  if (parameters.contact.formulation != ContactFormulation::penalty ||
-      !parameters.contact.automatic_penalty)
-    return;
-  // Wave problems (the bodies' highest mode resolved): an unresolved spring is the one mode the
-  // step cannot follow and the contact node chatters (bars 6.2 at factor 100: omega dt = 20,
-  // force peaks 3.2 against the exact 0.5, 117 contact episodes). At omega dt = 1 the spring's
-  // period error is 8 % and the force peak is 0.513 (1 episode). In the quasi-static regime of
-  // the spheres both are unresolved, the stiff penalty behaves and keeps the penetration small.
-  const double body_omega_dt   = model->highest_frequency() * integrator.time_step();
-  const double spring_omega_dt = penalty_spring_omega_dt();
-  if (resolved(body_omega_dt) && spring_omega_dt > 1.)
-  {
-    // With 2 beta < gamma the spring and the mesh together must stay below the stability limit
-    // (see check_stability()); a spring softer than omega dt = 1 would buy that with a penetration
-    // growing as 1 / (omega dt)^2, so such a time step is refused instead.
-    const double limit = integrator.stability_limit();
-    if (body_omega_dt * body_omega_dt + 1. > limit * limit * (1. + 2. * suggestion_rounding))
-      throw InputError(
-          "Contact/penalty factor = auto: with Time integration/beta = " +
-          format_number(integrator.beta()) +
-          " < gamma/2 the mesh's highest mode (omega dt = " + format_number(body_omega_dt) +
-          ") leaves a penalty spring of omega dt = 1 no room below the stability limit " +
-          format_number(limit) + "; use a time step <= " +
-          format_number(integrator.time_step() * std::sqrt(limit * limit - 1.) / body_omega_dt) +
-          ", beta >= gamma/2, or Lagrange multipliers.");
-    const double scale = 1. / (spring_omega_dt * spring_omega_dt);
-    contact->scale_penalty_stiffness(scale);
-    penalty_factor *= scale;
-  }
-  log << "  penalty factor (auto): " << penalty_factor
-      << ", stiffest contact spring omega dt = " << penalty_spring_omega_dt()
-      << ", bodies' highest mode omega dt = " << body_omega_dt << "\n";
-}
-
-template <int dim>
 void Simulation<dim>::check_stability() const
 {
   const double body_omega_dt   = model->highest_frequency() * integrator.time_step();
-  const double spring_omega_dt = penalty_spring_omega_dt();
+  const double spring_omega_dt = penalty_spring_omega_dt(*contact, mass, integrator.time_step());
   // A resolved mesh (omega dt <= 2, Courant number about 1) with an unresolved penalty spring: the
   // spring is the one frequency the step cannot follow, and the contact node chatters (see
   // size_automatic_penalty()).
-  if (spring_omega_dt > resolved_omega_dt && resolved(body_omega_dt))
+  if (spring_omega_dt > resolved_omega_dt && is_resolved(body_omega_dt))
     log << "WARNING: the penalty spring (Contact/penalty factor = " << penalty_factor
         << ") has omega dt = " << spring_omega_dt << " while the bodies' highest mode has "
         << body_omega_dt
@@ -251,6 +225,18 @@ void Simulation<dim>::check_stability() const
         "; use a time step <= " + format_number(integrator.time_step() * limit / omega_dt) +
         ", 2 beta >= gamma" + remedy + ".");
   };
+  // The automatic penalty keeps its springs at omega dt = 1; a softer spring would buy stability
+  // with a penetration growing as 1 / (omega dt)^2, so such a time step is refused instead.
+  if (penalty_lowered &&
+      body_omega_dt * body_omega_dt + 1. > limit * limit * (1. + 2. * suggestion_rounding))
+    throw InputError(
+        "Contact/penalty factor = auto: with Time integration/beta = " +
+        format_number(integrator.beta()) +
+        " < gamma/2 the mesh's highest mode (omega dt = " + format_number(body_omega_dt) +
+        ") leaves a penalty spring of omega dt = 1 no room below the stability limit " +
+        format_number(limit) + "; use a time step <= " +
+        format_number(integrator.time_step() * std::sqrt(limit * limit - 1.) / body_omega_dt) +
+        ", beta >= gamma/2, or Lagrange multipliers.");
   if (body_omega_dt > limit * (1. + suggestion_rounding))
     reject("the mesh's highest mode", body_omega_dt, "");
   const double coupled_omega_dt = std::hypot(body_omega_dt, spring_omega_dt);

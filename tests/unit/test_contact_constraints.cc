@@ -1,6 +1,7 @@
 // Unit tests of the contact constraint set apart from any mesh: its saddle-point rows against
 // finite differences of the gap, and the active-set update on a toy set of pairs.
 #include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact/penalty_sizing.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -110,5 +111,37 @@ TEST(ContactConstraints, ActiveSetEntersOnPenetrationAndLeavesOnTension)
   EXPECT_EQ(contact.active_multiplier(2), 0.); // a released pair carries no force
   EXPECT_TRUE(contact.is_active(3));
   EXPECT_FALSE(contact.update_active_set(closed, 1e-6, 1e-6));
+}
+// Penalty springs against the time step: omega dt = dt sqrt(k / m_r), m_r = m_a m_b / (m_a + m_b)
+// for a node pair and m_a against a wall, computed here by hand (masses 2 and 6: m_r = 1.5; wall
+// node mass 4). Contact/penalty factor = auto lowers every spring by the one factor that puts the
+// stiffest at omega dt = 1 when the bodies' mode is resolved (omega dt <= 2), and keeps them when
+// it is not or when they are already soft. Round-off bound 1e-14 on numbers of order 1.
+TEST(PenaltySizing, SpringFrequenciesAndAutomaticLowering)
+{
+  const Tensor<1, 2> up({0., 1.});
+  const Node<2> a = toy_node(0, Point<2>(0., 0.)), b = toy_node(1, Point<2>(0., 0.));
+  const Node<2> c = toy_node(2, Point<2>(1., 0.));
+  auto node_pair = toy_pair(a, b, up), wall_pair = toy_pair(c, {}, up, Point<2>(1., -1.));
+  node_pair.penalty_stiffness = 600.; // omega dt = 0.1 sqrt(600 / 1.5) = 2
+  wall_pair.penalty_stiffness = 100.; // omega dt = 0.1 sqrt(100 / 4) = 0.5
+  Vector<double> mass(6);
+  mass[0] = mass[1] = 2., mass[2] = mass[3] = 6., mass[4] = mass[5] = 4.;
+  const auto make = [&](const ContactFormulation formulation) {
+    return ContactConstraints<2>({node_pair, wall_pair}, formulation);
+  };
+
+  EXPECT_EQ(penalty_spring_omega_dt(make(ContactFormulation::lagrange_multiplier), mass, 0.1), 0.);
+  ContactConstraints<2> resolved = make(ContactFormulation::penalty);
+  EXPECT_NEAR(penalty_spring_omega_dt(resolved, mass, 0.1), 2., 1e-14);
+  EXPECT_NEAR(size_automatic_penalty(resolved, {mass, 0.1, 2.}), 0.25, 1e-14);
+  EXPECT_NEAR(penalty_spring_omega_dt(resolved, mass, 0.1), 1., 1e-14);
+  EXPECT_NEAR(resolved.candidate_pairs()[1].penalty_stiffness, 25., 1e-12);
+
+  ContactConstraints<2> quasi_static = make(ContactFormulation::penalty);
+  EXPECT_EQ(size_automatic_penalty(quasi_static, {mass, 0.1, 2.5}), 1.);
+  EXPECT_NEAR(penalty_spring_omega_dt(quasi_static, mass, 0.1), 2., 1e-14);
+  ContactConstraints<2> soft = make(ContactFormulation::penalty);
+  EXPECT_EQ(size_automatic_penalty(soft, {mass, 0.04, 0.5}), 1.); // stiffest at omega dt = 0.8
 }
 } // namespace dyncontact::testing

@@ -56,7 +56,7 @@ struct ContactParameters
   ContactDynamicsKind dynamics;
   /// penalty stiffness of a pair = this factor times E A / h of the stiffer side (dimensionless);
   /// with `automatic_penalty` the factor the models start from (quasi_static_penalty_factor),
-  /// which Simulation lowers for wave problems
+  /// which create_contact() lowers for wave problems (size_automatic_penalty())
   double penalty_factor;
   /// Contact/penalty factor = auto: chosen per run by the time-step resolution, see the prm help
   bool automatic_penalty;

@@ -53,6 +53,7 @@ public:
   void update_geometry(const Vector<double>& displacement);
 
   unsigned int n_pairs() const { return pairs.size(); }
+  ContactFormulation contact_formulation() const { return formulation; }
 
   /** Multiplies every pair's penalty stiffness by `factor` > 0 (automatic penalty sizing). */
   void scale_penalty_stiffness(double factor);

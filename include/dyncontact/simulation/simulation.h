@@ -115,17 +115,20 @@ private:
   Measures measure() const;
   StepGuards::Figures guard_figures(const Measures& measures) const;
 
+  /** Builds the discretization, the contact, the solver and the output schedule; logs a summary. */
   void setup();
-  /** omega dt of the stiffest penalty spring between its two lumped masses, sqrt(eps / m*) dt. */
-  double penalty_spring_omega_dt() const;
-  /**
-   * Contact/penalty factor = auto: where the bodies' highest mode is resolved (omega dt <= 2),
-   * lowers the springs to omega dt <= 1; logs the factor in force.
-   */
-  void size_automatic_penalty();
+  /** Mesh, DoFs, nodes, kinematics, bodies and their lumped mass, fixed DoFs, loads. */
+  void build_discretization();
+  /** Contact (create_contact, penalties sized), its dynamics treatment and the Newton solver. */
+  void build_contact_and_solver();
+  /** The per-DoF tables: body, impact direction, contact and fixed flags; the innermost pair. */
+  void index_dofs();
+  /** The steps of the profile times (warning for those after the end); the run's summary line. */
+  void schedule_and_log();
   /**
    * Warns when a penalty spring is the one unresolved frequency; throws InputError when the time
-   * step exceeds the stability limit of conditionally stable Newmark (2 beta < gamma).
+   * step exceeds the stability limit of conditionally stable Newmark (2 beta < gamma), for the
+   * mesh alone or with the penalty springs.
    */
   void check_stability() const;
   void set_initial_conditions();
@@ -234,6 +237,7 @@ private:
   std::set<unsigned int> profile_steps; ///< steps at which a profile is written
   double penalty_factor =
       0.; ///< the factor in force (Contact/penalty factor, or the automatic one)
+  bool penalty_lowered = false; ///< Contact/penalty factor = auto lowered the springs
   unsigned int n_steps;
   double time;
   Vector<double> displacement, velocity, acceleration;

@@ -1,0 +1,47 @@
+#include <dyncontact/contact/penalty_sizing.h>
+#include <dyncontact/time_integration/mode_resolution.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyncontact
+{
+template <int dim>
+double penalty_spring_omega_dt(const ContactConstraints<dim>& contact,
+                               const Vector<double>& lumped_mass,
+                               const double time_step)
+{
+  double spring_omega_dt = 0.;
+  if (contact.contact_formulation() != ContactFormulation::penalty)
+    return spring_omega_dt;
+  for (const auto& pair : contact.candidate_pairs())
+  {
+    const double mass_a  = lumped_mass[pair.node_a.dofs[0]];
+    const double reduced = pair.against_wall() ? mass_a
+                                               : mass_a * lumped_mass[pair.node_b->dofs[0]] /
+                                                     (mass_a + lumped_mass[pair.node_b->dofs[0]]);
+    spring_omega_dt =
+        std::max(spring_omega_dt, time_step * std::sqrt(pair.penalty_stiffness / reduced));
+  }
+  return spring_omega_dt;
+}
+
+template <int dim>
+double size_automatic_penalty(ContactConstraints<dim>& contact, const PenaltySizingInput& input)
+{
+  const double spring_omega_dt =
+      penalty_spring_omega_dt(contact, input.lumped_mass, input.time_step);
+  if (!is_resolved(input.body_omega_dt) || spring_omega_dt <= 1.)
+    return 1.;
+  const double scale = 1. / (spring_omega_dt * spring_omega_dt);
+  contact.scale_penalty_stiffness(scale);
+  return scale;
+}
+
+template double
+penalty_spring_omega_dt(const ContactConstraints<1>&, const Vector<double>&, double);
+template double
+penalty_spring_omega_dt(const ContactConstraints<2>&, const Vector<double>&, double);
+template double size_automatic_penalty(ContactConstraints<1>&, const PenaltySizingInput&);
+template double size_automatic_penalty(ContactConstraints<2>&, const PenaltySizingInput&);
+} // namespace dyncontact
