@@ -401,17 +401,14 @@ void Simulation<dim>::balance_body_momenta(Vector<double>& increment) const
   // do not depend on it), by c t m at every DoF. Choosing t to cancel the sum makes the step's
   // momentum change equal its recovered impulse exactly; t is the residual over c M, far below the
   // gap tolerance.
-  Vector<double> contact_force(dof_handler.n_dofs());
-  contact->add_contact_forces(contact_force);
+  const Vector<double>& residual         = solver->last_residual();
   const std::vector<bool> in_active_pair = active_pair_dofs();
   const double c                         = integrator.inertia_factor();
   std::vector<double> residual_sum(model->n_bodies(), 0.), inertia_sum(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
     if (!is_fixed_dof[i] && dof_direction[i] != 0. && !in_active_pair[i])
     {
-      const double residual =
-          c * mass[i] * increment[i] + internal_force[i] - external_force[i] - contact_force[i];
-      residual_sum[dof_body[i]] += dof_direction[i] * residual;
+      residual_sum[dof_body[i]] += dof_direction[i] * residual[i];
       inertia_sum[dof_body[i]] += c * mass[i] * dof_direction[i] * dof_direction[i];
     }
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)

@@ -99,6 +99,12 @@ public:
   const Vector<double>& internal_force() const { return residual.internal_force(); }
 
   /**
+   * The last evaluated residual (the converged one after solve): n_dofs force rows
+   * c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs), then one row per pair.
+   */
+  const Vector<double>& last_residual() const { return residual.residual(); }
+
+  /**
    * max diag(K_eff) of the last tangent (0: none yet), which scales the round-off floor and decides
    * whether a step's first evaluation needs a tangent; a checkpoint keeps it so that a resumed run
    * repeats the uninterrupted one exactly.
