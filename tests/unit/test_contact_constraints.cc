@@ -6,7 +6,6 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 
-#include <cmath>
 #include <gtest/gtest.h>
 
 namespace dyncontact::testing

@@ -10,7 +10,6 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
 
-#include <cmath>
 #include <gtest/gtest.h>
 
 #include "case_run.h"

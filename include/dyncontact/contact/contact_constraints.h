@@ -9,7 +9,6 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
-#include <optional>
 #include <vector>
 
 namespace dyncontact

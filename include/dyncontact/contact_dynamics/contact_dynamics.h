@@ -1,8 +1,8 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact_dynamics/contact_dynamics_kind.h>
 #include <dyncontact/time_integration/rate_map.h>
 
 #include <deal.II/lac/vector.h>
