@@ -63,12 +63,7 @@ template <int dim>
 double ContactConstraints<dim>::gap(const unsigned int pair_index,
                                     const Vector<double>& displacement) const
 {
-  // Reference gap plus relative displacement, never absolute positions: translating a problem
-  // must not cost digits.
-  const ContactPair<dim>& pair = pairs[pair_index];
-  const double u_b =
-      pair.against_wall() ? 0. : normal_component(*pair.node_b, pair.normal, displacement);
-  return pair.reference_gap() + u_b - normal_component(pair.node_a, pair.normal, displacement);
+  return pairs[pair_index].gap(displacement);
 }
 
 template <int dim>
@@ -79,30 +74,29 @@ void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern& sparsity,
   {
     const types::global_dof_index row = n_dofs + k;
     sparsity.add(row, row);
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      sparsity.add(row, pairs[k].node_a.dofs[d]);
-      sparsity.add(pairs[k].node_a.dofs[d], row);
-      if (!pairs[k].against_wall())
-      {
-        sparsity.add(row, pairs[k].node_b->dofs[d]);
-        sparsity.add(pairs[k].node_b->dofs[d], row);
-      }
-    }
+    pairs[k].for_each_node(
+        [&](const Node<dim>& node, double)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            sparsity.add(row, node.dofs[d]);
+            sparsity.add(node.dofs[d], row);
+          }
+        });
   }
 }
 
 template <int dim>
 void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
 {
+  // G^T lambda with G = dg/du: c_j n at the pair's nodes (-n on the slave node of body A).
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      // G^T lambda with G = dg/du: -n on body A, +n on body B.
-      force[pairs[k].node_a.dofs[d]] -= pairs[k].normal[d] * multiplier_values[k];
-      if (!pairs[k].against_wall())
-        force[pairs[k].node_b->dofs[d]] += pairs[k].normal[d] * multiplier_values[k];
-    }
+    pairs[k].for_each_node(
+        [&](const Node<dim>& node, const double coefficient)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            force[node.dofs[d]] += coefficient * pairs[k].normal[d] * multiplier_values[k];
+        });
 }
 
 template <int dim>
@@ -128,18 +122,17 @@ void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& dis
       constraint_residual[k] = inactive_diagonal * multiplier_values[k];
       continue;
     }
-    // Rows of the symmetric system [K_eff, -G^T; -G, -D]: -G = +n on body A, -n on body B.
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      const double n_d = pairs[k].normal[d];
-      add(row, pairs[k].node_a.dofs[d], n_d);
-      add(pairs[k].node_a.dofs[d], row, n_d);
-      if (!pairs[k].against_wall())
-      {
-        add(row, pairs[k].node_b->dofs[d], -n_d);
-        add(pairs[k].node_b->dofs[d], row, -n_d);
-      }
-    }
+    // Rows of the symmetric system [K_eff, -G^T; -G, -D]: -G = -c_j n at the pair's nodes.
+    pairs[k].for_each_node(
+        [&](const Node<dim>& node, const double coefficient)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+          {
+            const double entry = -coefficient * pairs[k].normal[d];
+            add(row, node.dofs[d], entry);
+            add(node.dofs[d], row, entry);
+          }
+        });
     constraint_residual[k] = -gap(k, displacement);
     if (formulation == ContactFormulation::penalty)
     {
@@ -197,7 +190,7 @@ ContactConstraints<dim>::recovered_contact_force(const Vector<double>& lumped_ma
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (active[k])
       force -= normal_balance(
-          pairs[k].node_a, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
+          pairs[k].slave, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
   return force;
 }
 
@@ -208,17 +201,22 @@ ContactConstraints<dim>::recovered_side_forces(const Vector<double>& lumped_mass
                                                const Vector<double>& net_internal_force) const
 {
   SideForces forces{0., 0.};
-  for (const bool side_b : {false, true})
-    for (unsigned int k = 0; k < pairs.size(); ++k)
-      if (active[k] && !pairs[k].against_wall())
-      {
-        const double balance = normal_balance(side_b ? *pairs[k].node_b : pairs[k].node_a,
-                                              pairs[k].normal,
-                                              lumped_mass,
-                                              acceleration,
-                                              net_internal_force);
-        (side_b ? forces.on_b : forces.on_a) += side_b ? balance : -balance;
-      }
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k] && !pairs[k].against_wall())
+      forces.on_a -= normal_balance(
+          pairs[k].slave, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
+  // A master node may serve several pairs (node-to-segment): each counts once, along the normal
+  // of the first active pair that holds it.
+  std::vector<bool> counted(lumped_mass.size(), false);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      for (const MasterNode<dim>& master : pairs[k].masters)
+        if (!counted[master.node.dofs[0]])
+        {
+          counted[master.node.dofs[0]] = true;
+          forces.on_b += normal_balance(
+              master.node, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
+        }
   return forces;
 }
 
@@ -237,8 +235,7 @@ double ContactConstraints<dim>::contact_radius(const Vector<double>& displacemen
   double radius = 0.;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (active[k])
-      radius =
-          std::max(radius, distance_from_axis(current_position(pairs[k].node_a, displacement)));
+      radius = std::max(radius, distance_from_axis(current_position(pairs[k].slave, displacement)));
   return radius;
 }
 

@@ -37,8 +37,9 @@ Contact<dim> build_contact(const ContactDescription<dim>& description,
   for (const auto& described : description.fixed_pairs)
   {
     ContactPair<dim> pair;
-    pair.node_a            = described.node_a;
-    pair.node_b            = described.node_b;
+    pair.slave = described.node_a;
+    if (described.node_b)
+      pair.masters = {{*described.node_b, 1.}};
     pair.wall_point        = described.wall_point;
     pair.normal            = described.normal;
     pair.penalty_stiffness = parameters.penalty_factor * described.stiffness_scale;

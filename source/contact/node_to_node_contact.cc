@@ -60,10 +60,10 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
       continue;
     }
     ContactPair<dim> pair;
-    pair.node_a = nodes_a[i];
-    pair.node_b = nodes_b[partner];
+    pair.slave   = nodes_a[i];
+    pair.masters = {{nodes_b[partner], 1.}};
     if (nodes_b[partner].position.distance(nodes_a[i].position) <= touching_tolerance)
-      pair.node_b->position = nodes_a[i].position;
+      pair.masters[0].node.position = nodes_a[i].position;
     pair.penalty_stiffness = penalty_stiffness_per_area * 0.5 * (areas_a[i] + areas_b[partner]);
     candidate_pairs.push_back(pair);
     surface_nodes_of_pair.emplace_back(i, partner);
@@ -76,12 +76,13 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
       if (pair.reference_gap() < -touching_tolerance)
       {
         std::ostringstream where;
-        where << pair.node_a.position;
-        throw InputError("body " + std::to_string(pair.node_a.body + 1) + " and body " +
-                         std::to_string(pair.node_b->body + 1) + " overlap at t = 0: the node " +
-                         where.str() + " of body " + std::to_string(pair.node_a.body + 1) +
-                         " lies " + format_number(-pair.reference_gap()) + " inside body " +
-                         std::to_string(pair.node_b->body + 1) + " (bodies may touch, to " +
+        where << pair.slave.position;
+        throw InputError("body " + std::to_string(pair.slave.body + 1) + " and body " +
+                         std::to_string(pair.masters[0].node.body + 1) +
+                         " overlap at t = 0: the node " + where.str() + " of body " +
+                         std::to_string(pair.slave.body + 1) + " lies " +
+                         format_number(-pair.reference_gap()) + " inside body " +
+                         std::to_string(pair.masters[0].node.body + 1) + " (bodies may touch, to " +
                          format_number(touching_tolerance) + ", but not overlap).");
       }
   if (unmatched > 0)

@@ -15,14 +15,9 @@ double penalty_spring_omega_dt(const ContactConstraints<dim>& contact,
   if (contact.contact_formulation() != ContactFormulation::penalty)
     return spring_omega_dt;
   for (const auto& pair : contact.candidate_pairs())
-  {
-    const double mass_a  = lumped_mass[pair.node_a.dofs[0]];
-    const double reduced = pair.against_wall() ? mass_a
-                                               : mass_a * lumped_mass[pair.node_b->dofs[0]] /
-                                                     (mass_a + lumped_mass[pair.node_b->dofs[0]]);
-    spring_omega_dt =
-        std::max(spring_omega_dt, time_step * std::sqrt(pair.penalty_stiffness / reduced));
-  }
+    spring_omega_dt = std::max(
+        spring_omega_dt,
+        time_step * std::sqrt(pair.penalty_stiffness * pair.inverse_effective_mass(lumped_mass)));
   return spring_omega_dt;
 }
 

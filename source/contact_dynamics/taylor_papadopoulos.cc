@@ -23,9 +23,7 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
     // within its tolerance (the literal form would leave [[a_{n+1}]] = g_{n+1} / (beta dt^2)).
     const double position_jump =
         contact.gap(k, step.old_displacement) - contact.gap(k, step.new_displacement);
-    const double inverse_weight_sum =
-        1. / lumped_mass[pair.node_a.dofs[0]] +
-        (pair.against_wall() ? 0. : 1. / lumped_mass[pair.node_b->dofs[0]]);
+    const double inverse_weight_sum = pair.inverse_effective_mass(lumped_mass);
 
     // Eqs. (21) and (22): the multipliers of the rate constraints [[a]].n = 0 and [[v]].n = 0.
     const double velocity_jump     = pair.normal_jump(v_old);
@@ -36,17 +34,18 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
     const double lambda_v =
         rates.predicted_velocity(velocity_jump, acceleration_jump) / inverse_weight_sum;
 
-    // Recovery of the normal rates of side a = 1 (A, sign -1) and a = 2 (B, sign +1).
-    const auto correct_side = [&](const Node<dim>& node, const double sign)
+    // Recovery of the normal rates of each node j of the pair, with its coefficient c_j (-1 for
+    // the slave node of body A, the weight w_i for a master node of body B).
+    const auto correct_side = [&](const Node<dim>& node, const double coefficient)
     {
       const double mass = lumped_mass[node.dofs[0]];
       // The increment over the predictor, n . (u_{n+1} - u~), shifted by the rate multiplier.
       const double a_normal = rates.acceleration(normal_component(node, normal, step.increment) +
-                                                 sign * lambda_a / mass);
+                                                 coefficient * lambda_a / mass);
       const double v_normal = rates.velocity(normal_component(node, normal, v_old),
                                              normal_component(node, normal, a_old),
                                              a_normal) -
-                              sign * lambda_v / mass;
+                              coefficient * lambda_v / mass;
       const double a_shift = a_normal - normal_component(node, normal, a_new);
       const double v_shift = v_normal - normal_component(node, normal, v_new);
       for (unsigned int d = 0; d < dim; ++d)
@@ -55,9 +54,7 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
         v_new[node.dofs[d]] += v_shift * normal[d];
       }
     };
-    correct_side(pair.node_a, -1.);
-    if (!pair.against_wall())
-      correct_side(*pair.node_b, +1.);
+    pair.for_each_node(correct_side);
   }
 }
 

@@ -137,19 +137,19 @@ void Simulation<dim>::index_dofs()
       dof_direction[node.dofs[d]] = direction[d];
     }
   for (const auto& pair : contact->candidate_pairs())
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      is_contact_dof[pair.node_a.dofs[d]] = true;
-      if (!pair.against_wall())
-        is_contact_dof[pair.node_b->dofs[d]] = true;
-    }
+    pair.for_each_node(
+        [&](const Node<dim>& node, double)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            is_contact_dof[node.dofs[d]] = true;
+        });
   // The pair nearest to the axis (axisymmetry: r = 0), whose pressure is centre_pressure.
   const auto& pairs = contact->candidate_pairs();
   innermost_pair    = std::min_element(pairs.begin(),
                                     pairs.end(),
                                     [](const ContactPair<dim>& a, const ContactPair<dim>& b) {
-                                      return distance_from_axis(a.node_a.position) <
-                                             distance_from_axis(b.node_a.position);
+                                      return distance_from_axis(a.slave.position) <
+                                             distance_from_axis(b.slave.position);
                                     }) -
                    pairs.begin();
 }
@@ -308,15 +308,12 @@ std::vector<bool> Simulation<dim>::active_pair_dofs() const
   std::vector<bool> in_active_pair(dof_handler.n_dofs(), false);
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
     if (contact->is_active(k))
-    {
-      const ContactPair<dim>& pair = contact->candidate_pairs()[k];
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        in_active_pair[pair.node_a.dofs[d]] = true;
-        if (!pair.against_wall())
-          in_active_pair[pair.node_b->dofs[d]] = true;
-      }
-    }
+      contact->candidate_pairs()[k].for_each_node(
+          [&](const Node<dim>& node, double)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              in_active_pair[node.dofs[d]] = true;
+          });
   return in_active_pair;
 }
 
@@ -428,15 +425,16 @@ template <int dim>
 Vector<double> Simulation<dim>::contact_traction(const std::vector<double>& pressures) const
 {
   Vector<double> traction(dof_handler.n_dofs());
+  // The slave node's pressure along -n on body A; on body B distributed to the master nodes by
+  // their weights (node-to-node: the facing node's own pressure).
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
-  {
-    const ContactPair<dim>& pair = contact->candidate_pairs()[k];
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      traction[pair.node_a.dofs[d]]  = -pressures[k] * pair.normal[d];
-      traction[pair.node_b->dofs[d]] = pressures[k] * pair.normal[d];
-    }
-  }
+    contact->candidate_pairs()[k].for_each_node(
+        [&](const Node<dim>& node, const double coefficient)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            traction[node.dofs[d]] +=
+                coefficient * pressures[k] * contact->candidate_pairs()[k].normal[d];
+        });
   return traction;
 }
 
@@ -445,7 +443,7 @@ void Simulation<dim>::write_contact_pressure(const std::vector<double>& pressure
 {
   std::vector<typename FieldOutput<dim>::PressureSample> samples;
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
-    samples.push_back({current_position(contact->candidate_pairs()[k].node_a, displacement),
+    samples.push_back({current_position(contact->candidate_pairs()[k].slave, displacement),
                        contact->gap(k, displacement),
                        contact->active_multiplier(k),
                        pressures[k],

@@ -25,8 +25,9 @@ ContactPair<2> toy_pair(const Node<2>& a,
                         const Point<2>& wall = Point<2>())
 {
   ContactPair<2> pair;
-  pair.node_a            = a;
-  pair.node_b            = b;
+  pair.slave = a;
+  if (b)
+    pair.masters = {{*b, 1.}};
   pair.wall_point        = wall;
   pair.normal            = normal;
   pair.penalty_stiffness = 0.;

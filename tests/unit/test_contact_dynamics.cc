@@ -29,9 +29,9 @@ struct TwoMassStep
         new_u(2 * dim), increment(2 * dim), v(2 * dim), a(2 * dim)
   {
     ContactPair<dim> pair;
-    pair.node_a = {0, Point<dim>(), {}};
+    pair.slave = {0, Point<dim>(), {}};
     for (unsigned int d = 0; d < dim; ++d)
-      pair.node_a.dofs[d] = d;
+      pair.slave.dofs[d] = d;
     if (against_wall)
       pair.wall_point = Point<dim>() + 0.05 * normal;
     else
@@ -39,7 +39,7 @@ struct TwoMassStep
       Node<dim> node_b{1, Point<dim>(), {}};
       for (unsigned int d = 0; d < dim; ++d)
         node_b.dofs[d] = dim + d;
-      pair.node_b = node_b;
+      pair.masters = {{node_b, 1.}};
     }
     pair.normal            = normal;
     pair.penalty_stiffness = 0.;

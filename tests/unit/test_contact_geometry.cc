@@ -45,9 +45,9 @@ TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
   const auto at_rest    = contact.surfaces->current_normals(Vector<double>(dof_handler.n_dofs()));
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
-    off_axis += pairs[k].node_a.position[0] > 1.;
-    EXPECT_NEAR(at_rest[k][0], 0., 1e-12) << "pair at r = " << pairs[k].node_a.position[0];
-    EXPECT_NEAR(at_rest[k][1], 1., 1e-12) << "pair at r = " << pairs[k].node_a.position[0];
+    off_axis += pairs[k].slave.position[0] > 1.;
+    EXPECT_NEAR(at_rest[k][0], 0., 1e-12) << "pair at r = " << pairs[k].slave.position[0];
+    EXPECT_NEAR(at_rest[k][1], 1., 1e-12) << "pair at r = " << pairs[k].slave.position[0];
   }
   EXPECT_GE(off_axis, 10u); // the check covers pairs far from the axis
 
@@ -63,8 +63,8 @@ TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
   const auto translated = contact.surfaces->current_normals(translation);
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
-    EXPECT_NEAR(translated[k][0], 0., 1e-12) << "pair at r = " << pairs[k].node_a.position[0];
-    EXPECT_NEAR(translated[k][1], 1., 1e-12) << "pair at r = " << pairs[k].node_a.position[0];
+    EXPECT_NEAR(translated[k][0], 0., 1e-12) << "pair at r = " << pairs[k].slave.position[0];
+    EXPECT_NEAR(translated[k][1], 1., 1e-12) << "pair at r = " << pairs[k].slave.position[0];
   }
 }
 } // namespace dyncontact::testing

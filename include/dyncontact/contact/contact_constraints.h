@@ -122,9 +122,10 @@ public:
                                  const Vector<double>& net_internal_force) const;
 
   /**
-   * The interface force of the active node-to-node pairs (wall pairs left out) recovered as in
-   * recovered_contact_force() on each side: `on_a` from the body-A nodes (compression positive),
-   * `on_b` from the body-B nodes (the force A exerts on B along n). Equal up to round-off, also
+   * The interface force of the active pairs between bodies (wall pairs left out) recovered as in
+   * recovered_contact_force() on each side: `on_a` from the slave nodes of body A (compression
+   * positive), `on_b` from the master nodes of body B, each once (the force A exerts on B along
+   * n). Equal up to round-off, also
    * after the modified scheme's correction, whose normal rate changes on the two sides of a pair
    * are equal and opposite; their difference measures the force balance.
    */

@@ -86,7 +86,8 @@ public:
 
 private:
   ContactSurface<dim> surface_a, surface_b;
-  /** Per pair: index of node_a in surface_a.nodes() and of node_b in surface_b.nodes(). */
+  /** Per pair: index of the slave node in surface_a.nodes() and of its master node in
+   * surface_b.nodes(). */
   std::vector<std::pair<unsigned int, unsigned int>> surface_nodes_of_pair;
   std::vector<ContactPair<dim>> candidate_pairs;
 };
