@@ -151,7 +151,7 @@ Tensor<1, 2> AxisymmetricMeshModel::impact_direction() const
   return axial;
 }
 
-std::optional<HertzImpactOfIdenticalSpheres> AxisymmetricMeshModel::hertz_reference() const
+std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
 {
   if (n_bodies() != 2 || spheres.size() != 2)
     return std::nullopt;
@@ -171,10 +171,9 @@ std::optional<HertzImpactOfIdenticalSpheres> AxisymmetricMeshModel::hertz_refere
   const double gap = std::abs(distance) - 2. * radius;
   if (approach_speed <= 0. || gap < -touching_tolerance())
     return std::nullopt;
-  return HertzImpactOfIdenticalSpheres(
-      ElasticSphere{radius, lower.youngs_modulus, lower.poissons_ratio, lower.density},
-      approach_speed,
-      gap <= touching_tolerance() ? 0. : gap / approach_speed);
+  const ElasticSphere sphere{radius, lower.youngs_modulus, lower.poissons_ratio, lower.density};
+  return HertzImpact::two_spheres(
+      sphere, sphere, approach_speed, gap <= touching_tolerance() ? 0. : gap / approach_speed);
 }
 
 void AxisymmetricMeshModel::write_reference(const std::string& directory,

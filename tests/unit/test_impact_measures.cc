@@ -1,4 +1,4 @@
-#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/hertz_impact.h>
 #include <dyncontact/reference/impact_measures.h>
 
 #include <algorithm>
@@ -14,7 +14,7 @@
 #include <vector>
 
 using dyncontact::ElasticSphere;
-using dyncontact::HertzImpactOfIdenticalSpheres;
+using dyncontact::HertzImpact;
 using dyncontact::ImpactMeasures;
 using dyncontact::measure_impact;
 
@@ -33,10 +33,10 @@ struct SampledHertzImpact
   double touch_offset;
 };
 
-HertzImpactOfIdenticalSpheres hertz_impact(const SampledHertzImpact& c)
+HertzImpact hertz_impact(const SampledHertzImpact& c)
 {
-  return HertzImpactOfIdenticalSpheres(
-      ElasticSphere{8.0, 5e3, 0.3, c.rho}, 2.0, 2.0 + c.touch_offset * c.dt);
+  const ElasticSphere sphere{8.0, 5e3, 0.3, c.rho};
+  return HertzImpact::two_spheres(sphere, sphere, 2.0, 2.0 + c.touch_offset * c.dt);
 }
 
 std::vector<double> sample_times(const SampledHertzImpact& c)
@@ -55,7 +55,7 @@ std::vector<double> sample_times(const SampledHertzImpact& c)
  */
 double scaled_step(const SampledHertzImpact& c)
 {
-  const HertzImpactOfIdenticalSpheres hertz = hertz_impact(c);
+  const HertzImpact hertz = hertz_impact(c);
   return c.dt * hertz.relative_approach_speed() / hertz.maximum_approach();
 }
 
@@ -132,13 +132,13 @@ TEST(ImpactMeasures, ExactHertzHistoryReproducesClosedForms)
   for (const SampledHertzImpact& c : sampled_cases())
   {
     SCOPED_TRACE(describe(c));
-    const HertzImpactOfIdenticalSpheres hertz = hertz_impact(c);
-    const std::vector<double> times           = sample_times(c);
-    const ImpactMeasures measures = measure_impact(times, hertz.contact_force_history(times));
-    const double h                = scaled_step(c);
-    const double time_scale       = hertz.maximum_approach() / hertz.relative_approach_speed();
-    const double t0               = hertz.first_touch_time();
-    const double t_c              = hertz.contact_duration();
+    const HertzImpact hertz         = hertz_impact(c);
+    const std::vector<double> times = sample_times(c);
+    const ImpactMeasures measures   = measure_impact(times, hertz.contact_force_history(times));
+    const double h                  = scaled_step(c);
+    const double time_scale         = hertz.maximum_approach() / hertz.relative_approach_speed();
+    const double t0                 = hertz.first_touch_time();
+    const double t_c                = hertz.contact_duration();
 
     const double peak_error = measures.peak_force / hertz.maximum_force() - 1.0;
     EXPECT_LE(std::abs(peak_error), 0.2 * std::pow(h, 4));
@@ -183,10 +183,10 @@ TEST(ImpactMeasures, PeriodTwoOscillationGivesItsAmplitude)
   for (const SampledHertzImpact& c : sampled_cases())
   {
     SCOPED_TRACE(describe(c));
-    const HertzImpactOfIdenticalSpheres hertz = hertz_impact(c);
-    const std::vector<double> times           = sample_times(c);
-    const std::vector<double> clean           = hertz.contact_force_history(times);
-    std::vector<double> ringing_force         = clean;
+    const HertzImpact hertz           = hertz_impact(c);
+    const std::vector<double> times   = sample_times(c);
+    const std::vector<double> clean   = hertz.contact_force_history(times);
+    std::vector<double> ringing_force = clean;
     for (std::size_t n = 0; n < ringing_force.size(); ++n)
       ringing_force[n] *= 1.0 + (n % 2 == 0 ? e : -e);
 
@@ -212,11 +212,11 @@ TEST(ImpactMeasures, PeriodTwoOscillationGivesItsAmplitude)
 // exactly the removed samples (trapezoidal weight dt; round-off tolerance).
 TEST(ImpactMeasures, ChatterZerosStayInsideOneContact)
 {
-  const SampledHertzImpact c                = {0.001, 0.0025, 1.9, 2.2, 0.3};
-  const HertzImpactOfIdenticalSpheres hertz = hertz_impact(c);
-  const std::vector<double> times           = sample_times(c);
-  const std::vector<double> clean           = hertz.contact_force_history(times);
-  std::size_t first                         = 0;
+  const SampledHertzImpact c      = {0.001, 0.0025, 1.9, 2.2, 0.3};
+  const HertzImpact hertz         = hertz_impact(c);
+  const std::vector<double> times = sample_times(c);
+  const std::vector<double> clean = hertz.contact_force_history(times);
+  std::size_t first               = 0;
   while (!(clean[first] > 0.0))
     ++first;
   std::vector<double> chattering          = clean;

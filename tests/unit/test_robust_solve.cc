@@ -2,7 +2,7 @@
 // finish with a physically impossible answer or stop must now complete with the physics the code
 // checks (energy never above its start, no tensile total force, impulse = momentum change), cutting
 // steps where needed; the figures are compared with Hertz's theory where it applies.
-#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/hertz_impact.h>
 #include <dyncontact/reference/impact_measures.h>
 
 #include <algorithm>
@@ -111,10 +111,9 @@ TEST(RobustSolve, EveryNewtonToleranceKeepsEnergyForceAndMomentum)
 // residuals 10^3 times the tolerance: the normals moved inside Newton without their variation in
 // the tangent. With the normals of u_n held over the step the tangent is exact, and the runs need
 // no step cut at all (before: 9 cuts at E1/E2 = 10, 45 at 100). They must match Hertz with
-// E* = 1 / ((1 - nu^2) / E1 + (1 - nu^2) / E2): the reference is the identical-sphere impact with
-// the modulus E_eq = 2 (1 - nu^2) E*, which has the same E*, R* = R/2, m* = m/2 and speed. Bands:
-// those the identical spheres meet on this mesh (test_sphere_impact.cc: peak 7 %, duration 4 %,
-// impulse 0.5 %).
+// E* = 1 / ((1 - nu^2) / E1 + (1 - nu^2) / E2), R* = R/2, m* = m/2 (HertzImpact::two_spheres()).
+// Bands: those the identical spheres meet on this mesh (test_sphere_impact.cc: peak 7 %, duration 4
+// %, impulse 0.5 %).
 TEST(RobustSolve, DissimilarSpheresCompleteAndMatchHertz)
 {
   const double nu = 0.3, e2 = 5e3;
@@ -123,9 +122,8 @@ TEST(RobustSolve, DissimilarSpheresCompleteAndMatchHertz)
     const double e1   = ratio * e2;
     const MeshRun run = run_mesh_case(
         spheres, {coarse_mesh, "Bodies/Body 1/Young's modulus=" + std::to_string(e1)});
-    const double effective_modulus = 1. / ((1. - nu * nu) / e1 + (1. - nu * nu) / e2);
-    const HertzImpactOfIdenticalSpheres hertz(
-        ElasticSphere{8., 2. * (1. - nu * nu) * effective_modulus, nu, 0.001}, 2., 2.);
+    const HertzImpact hertz = HertzImpact::two_spheres(
+        ElasticSphere{8., e1, nu, 0.001}, ElasticSphere{8., e2, nu, 0.001}, 2., 2.);
     const ImpactMeasures computed = measure(run.history());
     const std::string label       = "E1/E2 = " + std::to_string(ratio);
     std::cout << "  " << label << ": peak " << computed.peak_force << " (Hertz "

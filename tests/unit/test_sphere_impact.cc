@@ -1,8 +1,8 @@
 // Acceptance tests of the two-sphere impact (Taylor & Papadopoulos 1993, section 6.4): the shipped
 // prm files run in-process on the coarse member of the graded two-sphere mesh family and compared
-// with Hertz's theory (HertzImpactOfIdenticalSpheres, tested on its own) through measure_impact()
+// with Hertz's theory (HertzImpact, tested on its own) through measure_impact()
 // (tested on its own), and with exact conservation properties of node-to-node contact.
-#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/hertz_impact.h>
 #include <dyncontact/reference/impact_measures.h>
 
 #include <algorithm>
@@ -18,6 +18,9 @@ namespace dyncontact::testing
 {
 namespace
 {
+/** The paper's spheres of section 6.4 at rho = 0.001 (prm/spheres_rho0.001.prm). */
+const ElasticSphere paper_sphere{8., 5e3, 0.3, 1e-3};
+
 /** Coarse: 432 cells, pole edge 0.26, 5 surface nodes inside the Hertz radius 0.47 (rho = 0.001).
  */
 const std::string coarse_mesh =
@@ -117,8 +120,8 @@ std::vector<PressureRow> pressure_rows(const std::string& text)
 
 TEST(SphereImpact, CoarseMeshMatchesHertzWithinMeshBands)
 {
-  const MeshRun& run = soft_impact();
-  const HertzImpactOfIdenticalSpheres hertz({8., 5e3, 0.3, 1e-3}, 2., 2.);
+  const MeshRun& run            = soft_impact();
+  const HertzImpact hertz       = HertzImpact::two_spheres(paper_sphere, paper_sphere, 2., 2.);
   const ImpactMeasures computed = measure(run);
   const double peak_error       = computed.peak_force / hertz.maximum_force() - 1.;
   const double duration_error   = computed.duration / hertz.contact_duration() - 1.;
@@ -180,11 +183,11 @@ TEST(SphereImpact, ContactPressureIsHertzianOnTheContactZoneAndZeroOutside)
 
   // Hertz's pressure at this time: p(r) = p0 sqrt(1 - r^2 / a^2), a = sqrt(R* d), p0 = 3 F / (2
   // pi a^2), from the force F and approach d of the quasi-static impact.
-  const HertzImpactOfIdenticalSpheres hertz({8., 5e3, 0.3, 1e-3}, 2., 2.);
-  const double t      = std::stod(mid_contact);
-  const double a      = std::sqrt(hertz.effective_radius() * hertz.approach(t));
-  const double p0     = 3. * hertz.contact_force(t) / (2. * numbers::PI * a * a);
-  unsigned int active = 0;
+  const HertzImpact hertz = HertzImpact::two_spheres(paper_sphere, paper_sphere, 2., 2.);
+  const double t          = std::stod(mid_contact);
+  const double a          = std::sqrt(hertz.effective_radius() * hertz.approach(t));
+  const double p0         = 3. * hertz.contact_force(t) / (2. * numbers::PI * a * a);
+  unsigned int active     = 0;
   for (const PressureRow& row : rows)
   {
     const double p_hertz = row.r < a ? p0 * std::sqrt(1. - row.r * row.r / (a * a)) : 0.;
@@ -264,7 +267,7 @@ TEST(SphereImpact, PenaltyContactMatchesHertzWithinMeshBands)
   const MeshRun run =
       run_mesh_case("prm/spheres_rho0.001.prm",
                     {coarse_mesh, "Contact/dynamics=none", "Contact/formulation=penalty"});
-  const HertzImpactOfIdenticalSpheres hertz({8., 5e3, 0.3, 1e-3}, 2., 2.);
+  const HertzImpact hertz          = HertzImpact::two_spheres(paper_sphere, paper_sphere, 2., 2.);
   const ImpactMeasures computed    = measure(run);
   const auto penetration           = run.history().column("max_penetration");
   const double largest_penetration = *std::max_element(penetration.begin(), penetration.end());

@@ -3,7 +3,7 @@
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/models/gmsh_mesh.h>
 #include <dyncontact/models/problem_model.h>
-#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/hertz_impact.h>
 
 #include <optional>
 
@@ -68,7 +68,7 @@ public:
    * they touch to touching_tolerance(). Empty otherwise (one body, other shapes, dissimilar
    * spheres, overlapping spheres, spheres not approaching). Valid after create_triangulation().
    */
-  std::optional<HertzImpactOfIdenticalSpheres> hertz_reference() const;
+  std::optional<HertzImpact> hertz_reference() const;
   void print_summary(std::ostream& out, double time_step) const override;
 
 private:

@@ -6,7 +6,7 @@ namespace dyncontact
 {
 /**
  * The figures of one impact, measured from a sampled contact-force history, that are compared with
- * Hertz's theory (HertzImpactOfIdenticalSpheres), plus a measure of how much the force rings. See
+ * Hertz's theory (HertzImpact), plus a measure of how much the force rings. See
  * measure_impact() for the definitions.
  */
 struct ImpactMeasures

@@ -6,7 +6,7 @@ namespace dyncontact
 {
 /**
  * Data of a homogeneous, isotropic, linearly elastic solid sphere, as input to the analytic
- * references SphereBreathingModes and HertzImpactOfIdenticalSpheres. It is plain data: nothing is
+ * references SphereBreathingModes, HertzImpact and FiniteSphereImpact. It is plain data: nothing is
  * checked here (the classes that take it check what they need), and it says nothing about the
  * sphere's position or motion.
  */

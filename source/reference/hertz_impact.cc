@@ -1,4 +1,4 @@
-#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/hertz_impact.h>
 
 #include <algorithm>
 #include <array>
@@ -116,95 +116,179 @@ double decreasing_newton_root(double start, const Function& g, const Derivative&
   return x;
 }
 
-/// Throw std::invalid_argument with @p message unless @p value is positive (and not NaN).
-void require_positive(const double value, const std::string& message)
+/**
+ * Throw std::invalid_argument with @p message unless @p value is positive (and not NaN) and, if
+ * not @p infinity_allowed, finite.
+ */
+void require_positive(const double value,
+                      const std::string& message,
+                      const bool infinity_allowed = false)
 {
-  if (!(value > 0.0))
-    throw std::invalid_argument("HertzImpactOfIdenticalSpheres: " + message + " must be positive");
+  if (!(value > 0.0) || (!infinity_allowed && std::isinf(value)))
+    throw std::invalid_argument("HertzImpact: " + message + " must be positive" +
+                                (infinity_allowed ? "" : " and finite"));
 }
-} // namespace
 
-HertzImpactOfIdenticalSpheres::HertzImpactOfIdenticalSpheres(const ElasticSphere& sphere,
-                                                             const double relative_approach_speed,
-                                                             const double first_touch_time)
-    : speed(relative_approach_speed), touch_time(first_touch_time)
+/// Throw std::invalid_argument unless @p nu lies in (-1, 0.5].
+void require_poissons_ratio(const double nu)
+{
+  if (!(nu > -1.0 && nu <= 0.5))
+    throw std::invalid_argument("HertzImpact: Poisson's ratio must lie in (-1, 0.5], not " +
+                                std::to_string(nu));
+}
+
+/// a b / (a + b), or the finite one of @p a and @p b if the other is infinite.
+double series_combination(const double a, const double b)
+{
+  if (std::isinf(b))
+    return a;
+  if (std::isinf(a))
+    return b;
+  return a * b / (a + b);
+}
+
+/// Check the data of @p sphere that Hertz's theory needs.
+void require_valid_sphere(const ElasticSphere& sphere)
 {
   require_positive(sphere.radius, "the radius");
   require_positive(sphere.youngs_modulus, "Young's modulus");
   require_positive(sphere.density, "the density");
-  require_positive(relative_approach_speed, "the relative approach speed");
-  const double nu = sphere.poissons_ratio;
-  if (!(nu > -1.0 && nu <= 0.5))
-    throw std::invalid_argument(
-        "HertzImpactOfIdenticalSpheres: Poisson's ratio must lie in (-1, 0.5]");
+  require_poissons_ratio(sphere.poissons_ratio);
+}
+} // namespace
 
-  effective_radius_value  = sphere.radius / 2.0;
-  effective_modulus_value = sphere.youngs_modulus / (2.0 * (1.0 - nu * nu));
-  effective_mass_value    = sphere.density * 2.0 / 3.0 * pi * std::pow(sphere.radius, 3);
-  stiffness               = 4.0 / 3.0 * effective_modulus_value * std::sqrt(effective_radius_value);
-  max_approach            = std::pow(15.0 * effective_mass_value * speed * speed /
-                              (16.0 * effective_modulus_value * std::sqrt(effective_radius_value)),
-                          0.4);
-  duration                = contact_duration_coefficient() * max_approach / speed;
-  split_scaled_time       = scaled_time_from_touch(std::pow(split_z, 0.4));
+double sphere_mass(const ElasticSphere& sphere)
+{
+  return sphere.density * 4.0 / 3.0 * pi * std::pow(sphere.radius, 3);
 }
 
-double HertzImpactOfIdenticalSpheres::contact_duration_coefficient()
+double effective_radius(const double r1, const double r2)
+{
+  return series_combination(r1, r2);
+}
+
+double effective_modulus(const double e1, const double nu1, const double e2, const double nu2)
+{
+  return 1.0 / ((1.0 - nu1 * nu1) / e1 + (1.0 - nu2 * nu2) / e2);
+}
+
+double effective_mass(const double m1, const double m2)
+{
+  return series_combination(m1, m2);
+}
+
+HertzImpact::HertzImpact(const double effective_radius,
+                         const double effective_modulus,
+                         const double effective_mass,
+                         const double relative_approach_speed,
+                         const double first_touch_time)
+    : effective_radius_value(effective_radius), effective_modulus_value(effective_modulus),
+      effective_mass_value(effective_mass), speed(relative_approach_speed),
+      touch_time(first_touch_time)
+{
+  require_positive(effective_radius, "the effective radius");
+  require_positive(effective_modulus, "the effective modulus");
+  require_positive(effective_mass, "the effective mass");
+  require_positive(relative_approach_speed, "the relative approach speed");
+
+  stiffness         = 4.0 / 3.0 * effective_modulus_value * std::sqrt(effective_radius_value);
+  max_approach      = std::pow(15.0 * effective_mass_value * speed * speed /
+                              (16.0 * effective_modulus_value * std::sqrt(effective_radius_value)),
+                          0.4);
+  duration          = contact_duration_coefficient() * max_approach / speed;
+  split_scaled_time = scaled_time_from_touch(std::pow(split_z, 0.4));
+}
+
+HertzImpact HertzImpact::two_spheres(const ElasticSphere& first,
+                                     const ElasticSphere& second,
+                                     const double relative_approach_speed,
+                                     const double first_touch_time)
+{
+  require_valid_sphere(first);
+  require_valid_sphere(second);
+  return HertzImpact(
+      dyncontact::effective_radius(first.radius, second.radius),
+      dyncontact::effective_modulus(
+          first.youngs_modulus, first.poissons_ratio, second.youngs_modulus, second.poissons_ratio),
+      dyncontact::effective_mass(sphere_mass(first), sphere_mass(second)),
+      relative_approach_speed,
+      first_touch_time);
+}
+
+HertzImpact HertzImpact::sphere_on_flat(const ElasticSphere& sphere,
+                                        const ElasticFlatBody& flat,
+                                        const double relative_approach_speed,
+                                        const double first_touch_time)
+{
+  require_valid_sphere(sphere);
+  require_positive(flat.youngs_modulus, "the flat body's Young's modulus");
+  require_poissons_ratio(flat.poissons_ratio);
+  require_positive(flat.mass, "the flat body's mass", true);
+  return HertzImpact(
+      sphere.radius,
+      dyncontact::effective_modulus(
+          sphere.youngs_modulus, sphere.poissons_ratio, flat.youngs_modulus, flat.poissons_ratio),
+      dyncontact::effective_mass(sphere_mass(sphere), flat.mass),
+      relative_approach_speed,
+      first_touch_time);
+}
+
+double HertzImpact::contact_duration_coefficient()
 {
   return 2.0 * 0.4 * std::tgamma(0.4) * std::sqrt(pi) / std::tgamma(0.9);
 }
 
-double HertzImpactOfIdenticalSpheres::effective_radius() const
+double HertzImpact::effective_radius() const
 {
   return effective_radius_value;
 }
 
-double HertzImpactOfIdenticalSpheres::effective_modulus() const
+double HertzImpact::effective_modulus() const
 {
   return effective_modulus_value;
 }
 
-double HertzImpactOfIdenticalSpheres::effective_mass() const
+double HertzImpact::effective_mass() const
 {
   return effective_mass_value;
 }
 
-double HertzImpactOfIdenticalSpheres::contact_stiffness() const
+double HertzImpact::contact_stiffness() const
 {
   return stiffness;
 }
 
-double HertzImpactOfIdenticalSpheres::relative_approach_speed() const
+double HertzImpact::relative_approach_speed() const
 {
   return speed;
 }
 
-double HertzImpactOfIdenticalSpheres::first_touch_time() const
+double HertzImpact::first_touch_time() const
 {
   return touch_time;
 }
 
-double HertzImpactOfIdenticalSpheres::maximum_approach() const
+double HertzImpact::maximum_approach() const
 {
   return max_approach;
 }
 
-double HertzImpactOfIdenticalSpheres::maximum_force() const
+double HertzImpact::maximum_force() const
 {
   return stiffness * std::pow(max_approach, 1.5);
 }
 
-double HertzImpactOfIdenticalSpheres::contact_duration() const
+double HertzImpact::contact_duration() const
 {
   return duration;
 }
 
-double HertzImpactOfIdenticalSpheres::impulse() const
+double HertzImpact::impulse() const
 {
   return 2.0 * effective_mass_value * speed;
 }
 
-double HertzImpactOfIdenticalSpheres::approach(const double t) const
+double HertzImpact::approach(const double t) const
 {
   const double time_since_touch = t - touch_time;
   if (time_since_touch < 0.0)
@@ -214,7 +298,7 @@ double HertzImpactOfIdenticalSpheres::approach(const double t) const
   return max_approach * state_in_contact(time_since_touch).x;
 }
 
-double HertzImpactOfIdenticalSpheres::approach_rate(const double t) const
+double HertzImpact::approach_rate(const double t) const
 {
   const double time_since_touch = t - touch_time;
   if (time_since_touch < 0.0)
@@ -225,7 +309,12 @@ double HertzImpactOfIdenticalSpheres::approach_rate(const double t) const
   return time_since_touch <= 0.5 * duration ? rate : -rate;
 }
 
-double HertzImpactOfIdenticalSpheres::contact_force(const double t) const
+double HertzImpact::approach_under_force(const double force) const
+{
+  return std::pow(force / stiffness, 2.0 / 3.0);
+}
+
+double HertzImpact::contact_force(const double t) const
 {
   const double time_since_touch = t - touch_time;
   if (time_since_touch < 0.0 || time_since_touch > duration)
@@ -233,8 +322,7 @@ double HertzImpactOfIdenticalSpheres::contact_force(const double t) const
   return maximum_force() * std::pow(state_in_contact(time_since_touch).x, 1.5);
 }
 
-std::vector<double>
-HertzImpactOfIdenticalSpheres::contact_force_history(const std::vector<double>& times) const
+std::vector<double> HertzImpact::contact_force_history(const std::vector<double>& times) const
 {
   std::vector<double> forces;
   forces.reserve(times.size());
@@ -243,8 +331,7 @@ HertzImpactOfIdenticalSpheres::contact_force_history(const std::vector<double>& 
   return forces;
 }
 
-HertzImpactOfIdenticalSpheres::ScaledState
-HertzImpactOfIdenticalSpheres::state_in_contact(const double time_since_touch) const
+HertzImpact::ScaledState HertzImpact::state_in_contact(const double time_since_touch) const
 {
   // The motion is symmetric about the peak at t_c / 2: measure the scaled time from the nearer end
   // of the contact and, separately (to avoid cancellation), to the peak.

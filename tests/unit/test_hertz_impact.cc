@@ -1,17 +1,19 @@
-#include <dyncontact/reference/hertz_reference.h>
+#include <dyncontact/reference/hertz_impact.h>
 
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <vector>
 
+#include "runge_kutta.h"
 #include "simpson.h"
 
 using dyncontact::ElasticSphere;
-using dyncontact::HertzImpactOfIdenticalSpheres;
+using dyncontact::HertzImpact;
 
 namespace
 {
@@ -21,42 +23,38 @@ ElasticSphere paper_sphere(const double rho)
   return {8.0, 5e3, 0.3, rho};
 }
 
-using dyncontact::testing::simpson;
-
-/// Approach d and approach rate d' of the Hertz ODE at one instant.
-struct OdeState
+/// The impact of two paper_sphere(rho) at the relative speed 2, first touch at @p touch_time.
+HertzImpact paper_impact(const double rho, const double touch_time)
 {
-  double d;
-  double rate;
-};
+  return HertzImpact::two_spheres(paper_sphere(rho), paper_sphere(rho), 2.0, touch_time);
+}
+
+/// The impact of two copies of @p sphere at the relative speed @p speed, first touch at t = 0.
+HertzImpact identical_impact(const ElasticSphere& sphere, const double speed)
+{
+  return HertzImpact::two_spheres(sphere, sphere, speed, 0.0);
+}
+
+using dyncontact::testing::OdeState;
+using dyncontact::testing::simpson;
 
 /**
  * An independent solution of m* d'' = -K max(d, 0)^{3/2}, d(0) = 0, d'(0) = v by the classical
  * fourth-order Runge-Kutta method with n_steps steps of size h: the states at t = 0, h, 2h, ...
  */
-std::vector<OdeState> runge_kutta_history(const HertzImpactOfIdenticalSpheres& hertz,
-                                          const double h,
-                                          const unsigned int n_steps)
+std::vector<OdeState>
+runge_kutta_history(const HertzImpact& hertz, const double h, const unsigned int n_steps)
 {
-  const double k_over_m   = hertz.contact_stiffness() / hertz.effective_mass();
-  const auto acceleration = [&](const double d)
-  { return -k_over_m * std::pow(std::max(d, 0.0), 1.5); };
-  std::vector<OdeState> states = {{0.0, hertz.relative_approach_speed()}};
-  for (unsigned int step = 0; step < n_steps; ++step)
-  {
-    const OdeState& s = states.back();
-    const double k1   = acceleration(s.d);
-    const double k2   = acceleration(s.d + 0.5 * h * s.rate);
-    const double k3   = acceleration(s.d + 0.5 * h * s.rate + 0.25 * h * h * k1);
-    const double k4   = acceleration(s.d + h * s.rate + 0.5 * h * h * k2);
-    states.push_back({s.d + h * s.rate + h * h / 6.0 * (k1 + k2 + k3),
-                      s.rate + h / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4)});
-  }
-  return states;
+  const double k_over_m = hertz.contact_stiffness() / hertz.effective_mass();
+  return dyncontact::testing::runge_kutta_history(
+      [&](const double d) { return -k_over_m * std::pow(std::max(d, 0.0), 1.5); },
+      hertz.relative_approach_speed(),
+      h,
+      n_steps);
 }
 
 /// The kinetic plus elastic energy m* d'^2 / 2 + 2 K d^{5/2} / 5 of the relative motion.
-double relative_energy(const HertzImpactOfIdenticalSpheres& hertz, const OdeState& s)
+double relative_energy(const HertzImpact& hertz, const OdeState& s)
 {
   return 0.5 * hertz.effective_mass() * s.rate * s.rate +
          0.4 * hertz.contact_stiffness() * std::pow(std::max(s.d, 0.0), 2.5);
@@ -71,7 +69,7 @@ double relative_energy(const HertzImpactOfIdenticalSpheres& hertz, const OdeStat
 // It also documents that doc/method.md's 2.9432 is the value truncated, not rounded, to 4 decimals.
 TEST(HertzReference, ContactDurationCoefficient)
 {
-  const double coefficient = HertzImpactOfIdenticalSpheres::contact_duration_coefficient();
+  const double coefficient = HertzImpact::contact_duration_coefficient();
   EXPECT_NEAR(coefficient, 2.943275184324704657381787, 4.0 * 4.4e-16);
 
   const double quadrature =
@@ -124,7 +122,7 @@ TEST(HertzReference, ClosedFormsReproduceMethodNumbers)
                                     0.1}};
   for (const Case& c : cases)
   {
-    const HertzImpactOfIdenticalSpheres hertz(paper_sphere(c.rho), 2.0, 0.0);
+    const HertzImpact hertz = paper_impact(c.rho, 0.0);
     EXPECT_NEAR(hertz.maximum_approach(), c.d_max, 1e-14 * c.d_max);
     EXPECT_NEAR(hertz.contact_duration(), c.duration, 1e-14 * c.duration);
     EXPECT_NEAR(hertz.maximum_force(), c.peak_force, 1e-14 * c.peak_force);
@@ -151,7 +149,7 @@ TEST(HertzReference, HistoryAgreesWithIndependentRungeKutta)
 {
   for (const double rho : {1.0, 0.001})
   {
-    const HertzImpactOfIdenticalSpheres hertz(paper_sphere(rho), 2.0, 0.0);
+    const HertzImpact hertz            = paper_impact(rho, 0.0);
     const unsigned int n_fine          = 1u << 17;
     const double h                     = hertz.contact_duration() / n_fine;
     const std::vector<OdeState> fine   = runge_kutta_history(hertz, h, n_fine);
@@ -184,7 +182,7 @@ TEST(HertzReference, OdeReproducesClosedFormsAndConservesEnergy)
 {
   for (const double rho : {1.0, 0.001})
   {
-    const HertzImpactOfIdenticalSpheres hertz(paper_sphere(rho), 2.0, 0.0);
+    const HertzImpact hertz    = paper_impact(rho, 0.0);
     const unsigned int n_steps = 1u << 16;
     const double h             = hertz.contact_duration() / n_steps;
     const double k_over_m      = hertz.contact_stiffness() / hertz.effective_mass();
@@ -228,9 +226,9 @@ TEST(HertzReference, OdeReproducesClosedFormsAndConservesEnergy)
 // spheres start 4 apart at speed 2), to check the offset as well.
 TEST(HertzReference, HistoryReproducesPeakImpulseAndEnergy)
 {
-  const HertzImpactOfIdenticalSpheres hertz(paper_sphere(1.0), 2.0, 2.0);
-  const double t0  = hertz.first_touch_time();
-  const double t_c = hertz.contact_duration();
+  const HertzImpact hertz = paper_impact(1.0, 2.0);
+  const double t0         = hertz.first_touch_time();
+  const double t_c        = hertz.contact_duration();
 
   const auto force_from_end = [&](const bool from_start, const double sigma)
   {
@@ -277,10 +275,10 @@ TEST(HertzReference, HistoryReproducesPeakImpulseAndEnergy)
 // contact_force_history() equal to pointwise contact_force().
 TEST(HertzReference, OutsideContactTimeOffsetAndSampling)
 {
-  const HertzImpactOfIdenticalSpheres shifted(paper_sphere(1.0), 2.0, 2.0);
-  const HertzImpactOfIdenticalSpheres unshifted(paper_sphere(1.0), 2.0, 0.0);
-  const double t_c = shifted.contact_duration();
-  const double v   = shifted.relative_approach_speed();
+  const HertzImpact shifted   = paper_impact(1.0, 2.0);
+  const HertzImpact unshifted = paper_impact(1.0, 0.0);
+  const double t_c            = shifted.contact_duration();
+  const double v              = shifted.relative_approach_speed();
 
   EXPECT_EQ(shifted.contact_force(1.999), 0.0);
   EXPECT_EQ(shifted.contact_force(2.0 + t_c * (1.0 + 1e-12)), 0.0);
@@ -309,17 +307,116 @@ TEST(HertzReference, OutsideContactTimeOffsetAndSampling)
 // the incompressible limit nu = 0.5 is accepted (E* = 2 E / 3).
 TEST(HertzReference, RejectsInvalidInput)
 {
-  EXPECT_THROW(HertzImpactOfIdenticalSpheres({0.0, 5e3, 0.3, 1.0}, 2.0, 0.0),
-               std::invalid_argument);
-  EXPECT_THROW(HertzImpactOfIdenticalSpheres({8.0, 0.0, 0.3, 1.0}, 2.0, 0.0),
-               std::invalid_argument);
-  EXPECT_THROW(HertzImpactOfIdenticalSpheres({8.0, 5e3, 0.3, -1.0}, 2.0, 0.0),
-               std::invalid_argument);
-  EXPECT_THROW(HertzImpactOfIdenticalSpheres({8.0, 5e3, 0.6, 1.0}, 2.0, 0.0),
-               std::invalid_argument);
-  EXPECT_THROW(HertzImpactOfIdenticalSpheres({8.0, 5e3, -1.0, 1.0}, 2.0, 0.0),
-               std::invalid_argument);
-  EXPECT_THROW(HertzImpactOfIdenticalSpheres(paper_sphere(1.0), 0.0, 0.0), std::invalid_argument);
-  const HertzImpactOfIdenticalSpheres incompressible({8.0, 5e3, 0.5, 1.0}, 2.0, 0.0);
+  EXPECT_THROW(identical_impact({0.0, 5e3, 0.3, 1.0}, 2.0), std::invalid_argument);
+  EXPECT_THROW(identical_impact({8.0, 0.0, 0.3, 1.0}, 2.0), std::invalid_argument);
+  EXPECT_THROW(identical_impact({8.0, 5e3, 0.3, -1.0}, 2.0), std::invalid_argument);
+  EXPECT_THROW(identical_impact({8.0, 5e3, 0.6, 1.0}, 2.0), std::invalid_argument);
+  EXPECT_THROW(identical_impact({8.0, 5e3, -1.0, 1.0}, 2.0), std::invalid_argument);
+  EXPECT_THROW(identical_impact(paper_sphere(1.0), 0.0), std::invalid_argument);
+  const HertzImpact incompressible = identical_impact({8.0, 5e3, 0.5, 1.0}, 2.0);
   EXPECT_DOUBLE_EQ(incompressible.effective_modulus(), 2.0 * 5e3 / 3.0);
+}
+
+// Checks the two-body effective quantities and closed forms for dissimilar spheres (R1 = 8, R2 =
+// 4, E1 = 5e3, E2 = 2e4, nu1 = 0.3, nu2 = 0.25, rho1 = 1e-3, rho2 = 3e-3, v = 2) against values
+// computed by hand from R* = R1 R2 / (R1 + R2), E* = 1 / ((1 - nu1^2) / E1 + (1 - nu2^2) / E2),
+// m* = m1 m2 / (m1 + m2) and the closed forms, with 40-digit decimal arithmetic (Python's
+// decimal); tolerance 1e-14 relative, a few ulps of the pow() chain as in the identical case.
+// Swapping the spheres must give bit-identical results (the formulas are symmetric, and + and *
+// commute exactly in floating point).
+TEST(HertzImpact, DissimilarSpheresMatchHandComputedClosedFormsAndAreSymmetric)
+{
+  const ElasticSphere first{8.0, 5e3, 0.3, 1e-3};
+  const ElasticSphere second{4.0, 2e4, 0.25, 3e-3};
+  const HertzImpact hertz   = HertzImpact::two_spheres(first, second, 2.0, 0.0);
+  const HertzImpact swapped = HertzImpact::two_spheres(second, first, 2.0, 0.0);
+
+  const auto expect_relative = [](const double computed, const double expected)
+  { EXPECT_NEAR(computed, expected, 1e-14 * expected); };
+  expect_relative(hertz.effective_radius(), 2.666666666666666666667);
+  expect_relative(hertz.effective_modulus(), 4369.197160021845985800);
+  expect_relative(hertz.effective_mass(), 0.5849074322319905956701);
+  expect_relative(hertz.contact_stiffness(), 9513.158780151914453828);
+  expect_relative(hertz.maximum_approach(), 0.03936343227442083009807);
+  expect_relative(hertz.maximum_force(), 74.29578652521054483546);
+  expect_relative(hertz.contact_duration(), 0.05792870669157449849518);
+  expect_relative(hertz.impulse(), 2.339629728927962382681);
+
+  EXPECT_EQ(swapped.effective_radius(), hertz.effective_radius());
+  EXPECT_EQ(swapped.effective_modulus(), hertz.effective_modulus());
+  EXPECT_EQ(swapped.effective_mass(), hertz.effective_mass());
+  EXPECT_EQ(swapped.maximum_force(), hertz.maximum_force());
+  EXPECT_EQ(swapped.contact_duration(), hertz.contact_duration());
+  for (unsigned int i = 0; i <= 20; ++i)
+  {
+    const double t = i * hertz.contact_duration() / 20.0;
+    EXPECT_EQ(swapped.contact_force(t), hertz.contact_force(t));
+  }
+}
+
+// Checks that two identical spheres give the identical-sphere effective quantities R / 2,
+// E / (2 (1 - nu^2)) and rho 2/3 pi R^3 of the former identical-sphere class to round-off (4 ulps,
+// EXPECT_DOUBLE_EQ: the two-body forms round differently), and Hertz's law F = K d^{3/2} through
+// approach_under_force() (a few ulps of pow(), 1e-15 relative).
+TEST(HertzImpact, IdenticalSpheresGiveIdenticalSphereQuantities)
+{
+  for (const double rho : {1.0, 0.001})
+  {
+    const HertzImpact hertz = paper_impact(rho, 0.0);
+    EXPECT_DOUBLE_EQ(hertz.effective_radius(), 4.0);
+    EXPECT_DOUBLE_EQ(hertz.effective_modulus(), 5e3 / (2.0 * (1.0 - 0.3 * 0.3)));
+    EXPECT_DOUBLE_EQ(hertz.effective_mass(), rho * 2.0 / 3.0 * 3.14159265358979323846 * 512.0);
+    const double d = hertz.approach_under_force(hertz.maximum_force());
+    EXPECT_NEAR(d, hertz.maximum_approach(), 1e-15 * hertz.maximum_approach());
+  }
+}
+
+// Checks the sphere on a flat body: R* = R, E* from both bodies, m* = m for an immovable flat body
+// and m1 m2 / (m1 + m2) for a finite one (exact formulas, 1e-15 relative for the division
+// round-off); and that it is the limit of two spheres as the second sphere's radius R2 grows with
+// its mass kept (its density scaled by (R / R2)^3): R* = R / (1 + R / R2), so the relative
+// deviation of F_max (proportional to R*^{1/5}) and t_c (to R*^{-1/5}) is about (R / R2) / 5, below
+// the tolerance 2 R / R2 for R2 = 1e3 R and 1e6 R.
+TEST(HertzImpact, SphereOnFlatBodyIsTheLargeRadiusLimit)
+{
+  const ElasticSphere sphere{8.0, 5e3, 0.3, 1e-3};
+  const double infinity         = std::numeric_limits<double>::infinity();
+  const HertzImpact on_rigid    = HertzImpact::sphere_on_flat(sphere, {2e4, 0.25, infinity}, 2, 0);
+  const double sphere_mass_hand = 1e-3 * 4.0 / 3.0 * 3.14159265358979323846 * 512.0;
+  const double modulus_hand     = 1.0 / ((1.0 - 0.09) / 5e3 + (1.0 - 0.0625) / 2e4);
+  EXPECT_EQ(on_rigid.effective_radius(), 8.0);
+  EXPECT_NEAR(on_rigid.effective_modulus(), modulus_hand, 1e-15 * modulus_hand);
+  EXPECT_NEAR(on_rigid.effective_mass(), sphere_mass_hand, 1e-15 * sphere_mass_hand);
+
+  const HertzImpact on_finite = HertzImpact::sphere_on_flat(sphere, {2e4, 0.25, 3.0}, 2, 0);
+  const double reduced_mass   = sphere_mass_hand * 3.0 / (sphere_mass_hand + 3.0);
+  EXPECT_NEAR(on_finite.effective_mass(), reduced_mass, 1e-15 * reduced_mass);
+
+  for (const double ratio : {1e3, 1e6})
+  {
+    const double r2 = 8.0 * ratio;
+    const ElasticSphere big{
+        r2, 2e4, 0.25, 3.0 / (4.0 / 3.0 * 3.14159265358979323846 * r2 * r2 * r2)};
+    const HertzImpact two = HertzImpact::two_spheres(sphere, big, 2.0, 0.0);
+    EXPECT_NEAR(two.maximum_force(), on_finite.maximum_force(), 2.0 / ratio * two.maximum_force());
+    EXPECT_NEAR(
+        two.contact_duration(), on_finite.contact_duration(), 2.0 / ratio * two.contact_duration());
+    EXPECT_NEAR(two.impulse(), on_finite.impulse(), 1e-14 * two.impulse());
+  }
+}
+
+// Checks the two-body input checks (no tolerance involved): an infinite sphere radius or
+// effective mass, a flat body with non-positive mass or bad Poisson's ratio are rejected.
+TEST(HertzImpact, RejectsInvalidTwoBodyInput)
+{
+  const ElasticSphere sphere{8.0, 5e3, 0.3, 1e-3};
+  const double infinity = std::numeric_limits<double>::infinity();
+  EXPECT_THROW(HertzImpact::two_spheres(sphere, {infinity, 5e3, 0.3, 1e-3}, 2.0, 0.0),
+               std::invalid_argument);
+  EXPECT_THROW(HertzImpact::sphere_on_flat(sphere, {5e3, 0.3, 0.0}, 2.0, 0.0),
+               std::invalid_argument);
+  EXPECT_THROW(HertzImpact::sphere_on_flat(sphere, {5e3, 0.7, infinity}, 2.0, 0.0),
+               std::invalid_argument);
+  EXPECT_THROW(HertzImpact(4.0, 2e3, infinity, 2.0, 0.0), std::invalid_argument);
+  EXPECT_THROW(HertzImpact(4.0, -2e3, 1.0, 2.0, 0.0), std::invalid_argument);
 }
