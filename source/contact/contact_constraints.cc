@@ -1,5 +1,4 @@
 #include <dyncontact/contact/contact_constraints.h>
-#include <dyncontact/contact/node_to_node_contact.h>
 
 #include <algorithm>
 #include <cmath>
@@ -15,21 +14,18 @@ ContactConstraints<dim>::ContactConstraints(std::vector<ContactPair<dim>> pairs,
 }
 
 template <int dim>
-ContactConstraints<dim>::ContactConstraints(const NodeToNodeContact<dim>& surfaces,
+ContactConstraints<dim>::ContactConstraints(const ContactGeometry<dim>& geometry,
                                             const ContactFormulation formulation)
-    : ContactConstraints(surfaces.pairs(), formulation)
+    : ContactConstraints(geometry.pairs(), formulation)
 {
-  this->surfaces = &surfaces;
+  this->geometry = &geometry;
 }
 
 template <int dim>
 void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement)
 {
-  if (surfaces == nullptr)
-    return;
-  const auto normals = surfaces->current_normals(displacement);
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    pairs[k].normal = normals[k];
+  if (geometry != nullptr)
+    geometry->update_pairs(displacement, pairs);
 }
 
 template <int dim>
@@ -74,15 +70,21 @@ void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern& sparsity,
   {
     const types::global_dof_index row = n_dofs + k;
     sparsity.add(row, row);
-    pairs[k].for_each_node(
-        [&](const Node<dim>& node, double)
-        {
-          for (unsigned int d = 0; d < dim; ++d)
+    const auto add = [&](const types::global_dof_index dof)
+    {
+      sparsity.add(row, dof);
+      sparsity.add(dof, row);
+    };
+    if (geometry != nullptr)
+      for (const auto dof : geometry->coupled_dofs(k))
+        add(dof);
+    else
+      pairs[k].for_each_node(
+          [&](const Node<dim>& node, double)
           {
-            sparsity.add(row, node.dofs[d]);
-            sparsity.add(node.dofs[d], row);
-          }
-        });
+            for (unsigned int d = 0; d < dim; ++d)
+              add(node.dofs[d]);
+          });
   }
 }
 
@@ -243,13 +245,13 @@ template <int dim>
 std::vector<double>
 ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) const
 {
-  if (surfaces == nullptr)
+  if (geometry == nullptr)
     return {};
   std::vector<double> active_multipliers(pairs.size(), 0.);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (active[k])
       active_multipliers[k] = multiplier_values[k];
-  return surfaces->contact_pressures(displacement, active_multipliers);
+  return geometry->contact_pressures(displacement, active_multipliers);
 }
 
 template <int dim>

@@ -1,6 +1,7 @@
 #include <dyncontact/contact/node_to_node_contact.h>
 
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <limits>
 #include <sstream>
 
@@ -149,6 +150,28 @@ NodeToNodeContact<dim>::contact_pressures(const Vector<double>& displacement,
   for (unsigned int i = 0; i < zone.size(); ++i)
     pressures[zone[i]] = zone_pressures(i);
   return pressures;
+}
+
+template <int dim>
+void NodeToNodeContact<dim>::update_pairs(const Vector<double>& displacement,
+                                          std::vector<ContactPair<dim>>& pairs) const
+{
+  const auto normals = current_normals(displacement);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    pairs[k].normal = normals[k];
+}
+
+template <int dim>
+std::vector<types::global_dof_index>
+NodeToNodeContact<dim>::coupled_dofs(const unsigned int k) const
+{
+  std::vector<types::global_dof_index> dofs;
+  candidate_pairs[k].for_each_node(
+      [&](const Node<dim>& node, double)
+      { dofs.insert(dofs.end(), node.dofs.begin(), node.dofs.end()); });
+  std::sort(dofs.begin(), dofs.end());
+  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+  return dofs;
 }
 
 template class NodeToNodeContact<1>;

@@ -2,6 +2,7 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/parameters.h>
+#include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact/contact_pair.h>
 #include <dyncontact/discretization/node_index.h>
 
@@ -13,8 +14,6 @@
 
 namespace dyncontact
 {
-template <int dim>
-class NodeToNodeContact;
 
 /**
  * The contact layer: the candidate pairs, their active set and multipliers, and their rows in the
@@ -29,9 +28,10 @@ class NodeToNodeContact;
  * surface with Lagrange multipliers, the contact pressure at its node is not compressive either
  * (see update_active_set()).
  *
- * Normals are fixed unless the pairs come from a NodeToNodeContact: then update_geometry() moves
- * them to a configuration; the time loop calls it at every converged (or restored) configuration,
- * and a step's Newton solve keeps those normals (see NodeToNodeContact).
+ * Normals are fixed unless the pairs come from a ContactGeometry (NodeToNodeContact): then
+ * update_geometry() moves them (normals and, for node-to-segment pairs, master points) to a
+ * configuration; the time loop calls it at every converged (or restored) configuration,
+ * and a step's Newton solve keeps those pairs (see ContactGeometry).
  *
  * It does not choose time steps, know the integrator, assemble elasticity or solve linear systems.
  */
@@ -42,12 +42,12 @@ public:
   /** Pairs with fixed normals (bars, a rigid wall). */
   ContactConstraints(std::vector<ContactPair<dim>> pairs, ContactFormulation formulation);
 
-  /** The pairs of `surfaces`, whose normals follow the current configuration. */
-  ContactConstraints(const NodeToNodeContact<dim>& surfaces, ContactFormulation formulation);
+  /** The pairs of `geometry`, which follow the current configuration (update_geometry()). */
+  ContactConstraints(const ContactGeometry<dim>& geometry, ContactFormulation formulation);
 
   /**
-   * For pairs of a NodeToNodeContact: sets every normal to that at `displacement`. Does nothing
-   * for fixed normals.
+   * For pairs of a ContactGeometry: moves every pair to `displacement`
+   * (ContactGeometry::update_pairs()). Does nothing for fixed pairs.
    */
   void update_geometry(const Vector<double>& displacement);
 
@@ -158,7 +158,7 @@ public:
   double contact_radius(const Vector<double>& displacement) const;
 
   /**
-   * The contact pressure at every pair (see NodeToNodeContact::contact_pressures()) at
+   * The contact pressure at every pair (see ContactGeometry::contact_pressures()) at
    * `displacement` from the multipliers of the active pairs; empty for pairs with fixed normals.
    */
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
@@ -175,7 +175,7 @@ private:
                         const Vector<double>& net_internal_force) const;
 
   std::vector<ContactPair<dim>> pairs;
-  const NodeToNodeContact<dim>* surfaces = nullptr; ///< null: fixed normals
+  const ContactGeometry<dim>* geometry = nullptr; ///< null: fixed pairs
   ContactFormulation formulation;
   std::vector<bool> active;
   Vector<double> multiplier_values;

@@ -19,7 +19,7 @@ namespace dyncontact
 template <int dim>
 struct Contact
 {
-  std::unique_ptr<NodeToNodeContact<dim>> surfaces; ///< null: fixed-normal pairs only
+  std::unique_ptr<ContactGeometry<dim>> surfaces; ///< null: fixed-normal pairs only
   std::unique_ptr<ContactConstraints<dim>> constraints;
   /// the penalty factor in force: Contact/penalty factor, times the automatic scale if any
   double penalty_factor;

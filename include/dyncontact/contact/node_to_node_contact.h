@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact/contact_pair.h>
 #include <dyncontact/contact/contact_surface.h>
 
@@ -41,7 +42,7 @@ namespace dyncontact
  * projection, no self contact.
  */
 template <int dim>
-class NodeToNodeContact
+class NodeToNodeContact : public ContactGeometry<dim>
 {
 public:
   /**
@@ -61,7 +62,14 @@ public:
                     double touching_tolerance);
 
   /** The candidate pairs, with their reference normals. */
-  const std::vector<ContactPair<dim>>& pairs() const { return candidate_pairs; }
+  const std::vector<ContactPair<dim>>& pairs() const override { return candidate_pairs; }
+
+  /** Sets each pair's normal to current_normals(displacement); the partners never change. */
+  void update_pairs(const Vector<double>& displacement,
+                    std::vector<ContactPair<dim>>& pairs) const override;
+
+  /** The DoFs of the pair's two nodes. */
+  std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;
 
   /**
    * The current normal of every pair, in the order of pairs(), at `displacement` (a whole vector
@@ -82,7 +90,7 @@ public:
    * zero.
    */
   std::vector<double> contact_pressures(const Vector<double>& displacement,
-                                        const std::vector<double>& multipliers) const;
+                                        const std::vector<double>& multipliers) const override;
 
 private:
   ContactSurface<dim> surface_a, surface_b;

@@ -3,7 +3,7 @@
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
-#include <dyncontact/contact/node_to_node_contact.h>
+#include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/discretization/node_index.h>
@@ -226,8 +226,8 @@ private:
   Vector<double> mass;
   std::vector<types::global_dof_index> fixed_dofs;
   std::unique_ptr<SurfaceTractions<dim>> loads;
-  Vector<double> external_force;                           ///< W at the current time
-  std::unique_ptr<NodeToNodeContact<dim>> surface_contact; ///< null: fixed-normal pairs only
+  Vector<double> external_force;                         ///< W at the current time
+  std::unique_ptr<ContactGeometry<dim>> surface_contact; ///< null: fixed-normal pairs only
   std::unique_ptr<ContactConstraints<dim>> contact;
   std::unique_ptr<ContactDynamics<dim>> contact_dynamics; ///< Contact/dynamics
   std::unique_ptr<ContactNewtonSolver<dim>> solver;

@@ -1,0 +1,57 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_pair.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * The geometry of contact between two deformable surfaces: which candidate pairs exist, where each
+ * slave node's contact point on the master surface is and along which normal, and the contact
+ * pressure a set of nodal multipliers represents. The family: NodeToNodeContact (matching
+ * meshes, one facing node per slave node) and node-to-segment contact (the slave node projected
+ * onto a master face). ContactConstraints enforces the pairs; it calls update_pairs() once per
+ * converged configuration, so that within a time step the pairs are those of u_n and the gap is
+ * linear in u (an exact Newton tangent).
+ *
+ * The number of pairs and each pair's slave node never change; the master nodes, weights and
+ * normal may (update_pairs()), within the DoFs coupled_dofs() declares, from which the sparsity
+ * pattern of the saddle-point system is built once.
+ */
+template <int dim>
+class ContactGeometry
+{
+public:
+  virtual ~ContactGeometry() = default;
+
+  /** The candidate pairs in the reference configuration (penalty stiffness included). */
+  virtual const std::vector<ContactPair<dim>>& pairs() const = 0;
+
+  /**
+   * Moves every pair of `pairs` (as given by pairs(), same order) to the configuration
+   * `displacement` (a whole vector in the DoFHandler's numbering): its normal and, where the
+   * geometry allows it, its master nodes and weights. Slave nodes, wall points and penalty
+   * stiffnesses are left as they are.
+   */
+  virtual void update_pairs(const Vector<double>& displacement,
+                            std::vector<ContactPair<dim>>& pairs) const = 0;
+
+  /**
+   * Every DoF the constraint row of pair `k` may couple to over the run (the slave node's and
+   * every master node update_pairs() may choose), sorted and unique.
+   */
+  virtual std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const = 0;
+
+  /**
+   * The contact pressure [force/area] at every pair's slave node, consistent with the nodal
+   * forces `multipliers` (one per pair, zero for inactive pairs) at `displacement`: exactly 0 for
+   * an open pair.
+   */
+  virtual std::vector<double> contact_pressures(const Vector<double>& displacement,
+                                                const std::vector<double>& multipliers) const = 0;
+};
+} // namespace dyncontact
