@@ -1,7 +1,49 @@
 #include <dyncontact/contact_dynamics/taylor_papadopoulos.h>
 
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <map>
+#include <vector>
+
 namespace dyncontact
 {
+namespace
+{
+/** One appearance of a node in an active pair: the pair's row among the active ones, c_kj. */
+struct Incidence
+{
+  unsigned int row;
+  double coefficient;
+};
+
+/**
+ * Solves (B M^-1 B^T) x = rhs for both right-hand sides, B the active pairs' rows
+ * B_kj = c_kj n_k^T over the nodes j (slave -1, master w_i) and M the lumped nodal masses.
+ */
+template <int dim>
+std::pair<Eigen::VectorXd, Eigen::VectorXd>
+solve_rate_multipliers(const std::vector<const ContactPair<dim>*>& active,
+                       const std::map<types::global_dof_index, std::vector<Incidence>>& incidence,
+                       const Vector<double>& lumped_mass,
+                       const Eigen::VectorXd& rhs_a,
+                       const Eigen::VectorXd& rhs_v)
+{
+  std::vector<Eigen::Triplet<double>> entries;
+  for (const auto& [dof, appearances] : incidence)
+    for (const Incidence& k : appearances)
+      for (const Incidence& l : appearances)
+        entries.emplace_back(k.row,
+                             l.row,
+                             k.coefficient * l.coefficient *
+                                 (active[k.row]->normal * active[l.row]->normal) /
+                                 lumped_mass[dof]);
+  Eigen::SparseMatrix<double> matrix(active.size(), active.size());
+  matrix.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(matrix);
+  return {factorization.solve(rhs_a), factorization.solve(rhs_v)};
+}
+} // namespace
+
 template <int dim>
 void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
                                             const ContactConstraints<dim>& contact,
@@ -12,49 +54,65 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
 {
   const Vector<double>& v_old = step.old_velocity;
   const Vector<double>& a_old = step.old_acceleration;
+  std::vector<const ContactPair<dim>*> active;
+  std::vector<double> predicted_position_jump, predicted_velocity_jump;
+  // Every node of an active pair (keyed by its first DoF) with its pairs' rows and coefficients.
+  std::map<types::global_dof_index, std::vector<Incidence>> incidence;
+  std::map<types::global_dof_index, const Node<dim>*> node_of;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
   {
     if (!contact.is_active(k))
       continue;
     const ContactPair<dim>& pair = contact.candidate_pairs()[k];
-    const Tensor<1, dim>& normal = pair.normal;
     // Eq. (21) holds for a pair closed at t_{n+1}, where its numerator's [[X + u_n]] equals
     // g_n - g_{n+1}; the latter keeps [[a_{n+1}]] = 0 exact even for the residual gap Newton leaves
     // within its tolerance (the literal form would leave [[a_{n+1}]] = g_{n+1} / (beta dt^2)).
     const double position_jump =
         contact.gap(k, step.old_displacement) - contact.gap(k, step.new_displacement);
-    const double inverse_weight_sum = pair.inverse_effective_mass(lumped_mass);
-
-    // Eqs. (21) and (22): the multipliers of the rate constraints [[a]].n = 0 and [[v]].n = 0.
     const double velocity_jump     = pair.normal_jump(v_old);
     const double acceleration_jump = pair.normal_jump(a_old);
-    const double lambda_a =
-        rates.predicted_displacement(position_jump, velocity_jump, acceleration_jump) /
-        inverse_weight_sum;
-    const double lambda_v =
-        rates.predicted_velocity(velocity_jump, acceleration_jump) / inverse_weight_sum;
+    predicted_position_jump.push_back(
+        rates.predicted_displacement(position_jump, velocity_jump, acceleration_jump));
+    predicted_velocity_jump.push_back(rates.predicted_velocity(velocity_jump, acceleration_jump));
+    const unsigned int row = active.size();
+    active.push_back(&pair);
+    pair.for_each_node(
+        [&](const Node<dim>& node, const double coefficient)
+        {
+          incidence[node.dofs[0]].push_back({row, coefficient});
+          node_of[node.dofs[0]] = &node;
+        });
+  }
+  if (active.empty())
+    return;
 
-    // Recovery of the normal rates of each node j of the pair, with its coefficient c_j (-1 for
-    // the slave node of body A, the weight w_i for a master node of body B).
-    const auto correct_side = [&](const Node<dim>& node, const double coefficient)
+  // Eqs. (21) and (22), for pairs that may share nodes (node-to-segment): the multipliers of the
+  // rate constraints [[a]].n = 0 and [[v]].n = 0 of all active pairs at once.
+  const auto [lambda_a, lambda_v] = solve_rate_multipliers(
+      active,
+      incidence,
+      lumped_mass,
+      Eigen::Map<const Eigen::VectorXd>(predicted_position_jump.data(), active.size()),
+      Eigen::Map<const Eigen::VectorXd>(predicted_velocity_jump.data(), active.size()));
+
+  // Recovery of each node's rates: the increment over the predictor shifted by M^-1 B^T lambda_a
+  // gives a_{n+1}, the velocity update from it shifted by M^-1 B^T lambda_v gives v_{n+1}.
+  for (const auto& [first_dof, appearances] : incidence)
+  {
+    const Node<dim>& node = *node_of.at(first_dof);
+    Tensor<1, dim> shift_a, shift_v;
+    for (const Incidence& k : appearances)
     {
-      const double mass = lumped_mass[node.dofs[0]];
-      // The increment over the predictor, n . (u_{n+1} - u~), shifted by the rate multiplier.
-      const double a_normal = rates.acceleration(normal_component(node, normal, step.increment) +
-                                                 coefficient * lambda_a / mass);
-      const double v_normal = rates.velocity(normal_component(node, normal, v_old),
-                                             normal_component(node, normal, a_old),
-                                             a_normal) -
-                              coefficient * lambda_v / mass;
-      const double a_shift = a_normal - normal_component(node, normal, a_new);
-      const double v_shift = v_normal - normal_component(node, normal, v_new);
-      for (unsigned int d = 0; d < dim; ++d)
-      {
-        a_new[node.dofs[d]] += a_shift * normal[d];
-        v_new[node.dofs[d]] += v_shift * normal[d];
-      }
-    };
-    pair.for_each_node(correct_side);
+      shift_a += k.coefficient * lambda_a[k.row] * active[k.row]->normal;
+      shift_v += k.coefficient * lambda_v[k.row] * active[k.row]->normal;
+    }
+    const double mass = lumped_mass[first_dof];
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      const types::global_dof_index dof = node.dofs[d];
+      a_new[dof] = rates.acceleration(step.increment[dof] + shift_a[d] / mass);
+      v_new[dof] = rates.velocity(v_old[dof], a_old[dof], a_new[dof]) - shift_v[d] / mass;
+    }
   }
 }
 

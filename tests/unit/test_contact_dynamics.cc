@@ -8,6 +8,7 @@
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 
+#include <array>
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -165,5 +166,92 @@ TEST(ContactDynamics, NoneKeepsTheClassicalRates)
     EXPECT_EQ(step.a[i], classical_a[i]);
   }
   EXPECT_GT(std::abs(step.v[1] - step.v[0]), 0.1); // the jump the paper's correction removes
+}
+// Node-to-segment pairs sharing a master face: two slave nodes against the same three master nodes
+// (quadratic shape-function weights, one negative), along different normals, with unequal masses.
+// The correction must close both pairs' normal velocity and acceleration jumps at once (a pairwise
+// correction would reopen the first pair's jump when correcting the second) and conserve linear
+// momentum: sum_j m_j (corrected - classical) = 0 per component, since each pair's coefficients
+// sum to zero. Bounds: 1e-12 relative to the rates' scale (order 10), a few roundings of a 2 x 2
+// solve and of sums over five nodes.
+TEST(ContactDynamics, TaylorPapadopoulosClosesPairsSharingAMasterFace)
+{
+  constexpr unsigned int n_nodes = 5; // masters 0, 1, 2; slaves 3, 4
+  std::vector<Node<2>> nodes;
+  for (unsigned int j = 0; j < n_nodes; ++j)
+    nodes.push_back(
+        {static_cast<types::material_id>(j < 3 ? 1 : 0), Point<2>(), {{2 * j, 2 * j + 1}}});
+  const std::array<Tensor<1, 2>, 2> normals{
+      {Tensor<1, 2>({0.6, 0.8}), Tensor<1, 2>({-0.28, 0.96})}};
+  const std::array<std::array<double, 3>, 2> weights{{{{0.6, 0.5, -0.1}}, {{-0.05, 0.3, 0.75}}}};
+  std::vector<ContactPair<2>> pairs(2);
+  for (unsigned int k = 0; k < 2; ++k)
+  {
+    pairs[k].slave = nodes[3 + k];
+    for (unsigned int i = 0; i < 3; ++i)
+      pairs[k].masters.push_back({nodes[i], weights[k][i]});
+    pairs[k].normal            = normals[k];
+    pairs[k].penalty_stiffness = 0.;
+  }
+  ContactConstraints<2> contact(pairs, ContactFormulation::lagrange_multiplier);
+
+  const RateMap rates{0.1, 0.3, 0.6};
+  Vector<double> mass(2 * n_nodes), old_u(2 * n_nodes), old_v(2 * n_nodes), old_a(2 * n_nodes),
+      new_u(2 * n_nodes), increment(2 * n_nodes), v(2 * n_nodes), a(2 * n_nodes);
+  for (unsigned int i = 0; i < 2 * n_nodes; ++i)
+  {
+    mass[i]  = 1. + 0.5 * (i / 2);
+    old_v[i] = 2. - 0.7 * i + 0.03 * i * i;
+    old_a[i] = -1. + 0.4 * i - 0.05 * i * i;
+    new_u[i] = 0.01 * i - 0.002 * i * i;
+  }
+  // Both pairs closed at t_{n+1}: each slave node on its master point along n, moved tangentially.
+  for (unsigned int k = 0; k < 2; ++k)
+  {
+    const Tensor<1, 2> tangent = cross_product_2d(normals[k]);
+    Tensor<1, 2> master_point;
+    for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int d = 0; d < 2; ++d)
+        master_point[d] += weights[k][i] * new_u[2 * i + d];
+    for (unsigned int d = 0; d < 2; ++d)
+      new_u[2 * (3 + k) + d] = master_point[d] + 0.02 * (k + 1.) * tangent[d];
+  }
+  Vector<double> penetrating = new_u;
+  for (unsigned int k = 0; k < 2; ++k)
+    for (unsigned int d = 0; d < 2; ++d)
+      penetrating[2 * (3 + k) + d] += 0.2 * normals[k][d];
+  contact.update_active_set(penetrating, 1e-12, 0.);
+  ASSERT_TRUE(contact.is_active(0) && contact.is_active(1));
+  for (unsigned int k = 0; k < 2; ++k)
+    ASSERT_NEAR(contact.gap(k, new_u), 0., 1e-15);
+  for (unsigned int i = 0; i < 2 * n_nodes; ++i)
+  {
+    increment[i] = new_u[i] - rates.predicted_displacement(old_u[i], old_v[i], old_a[i]);
+    a[i]         = rates.acceleration(increment[i]);
+    v[i]         = rates.velocity(old_v[i], old_a[i], a[i]);
+  }
+  const Vector<double> classical_v = v, classical_a = a;
+  for (unsigned int k = 0; k < 2; ++k)
+    EXPECT_GT(std::abs(pairs[k].normal_jump(classical_v)), 0.1); // the jumps to be removed
+
+  create_contact_dynamics<2>(ContactDynamicsKind::taylor_papadopoulos)
+      ->correct_rates(rates, contact, mass, {old_u, old_v, old_a, new_u, increment}, v, a);
+  const double scale = classical_a.linfty_norm() + classical_v.linfty_norm();
+  for (unsigned int k = 0; k < 2; ++k)
+  {
+    EXPECT_NEAR(pairs[k].normal_jump(v), 0., 1e-12 * scale) << "pair " << k;
+    EXPECT_NEAR(pairs[k].normal_jump(a), 0., 1e-12 * scale) << "pair " << k;
+  }
+  for (unsigned int d = 0; d < 2; ++d)
+  {
+    double momentum_change = 0., force_change = 0.;
+    for (unsigned int j = 0; j < n_nodes; ++j)
+    {
+      momentum_change += mass[2 * j + d] * (v[2 * j + d] - classical_v[2 * j + d]);
+      force_change += mass[2 * j + d] * (a[2 * j + d] - classical_a[2 * j + d]);
+    }
+    EXPECT_NEAR(momentum_change, 0., 1e-12 * scale) << "component " << d;
+    EXPECT_NEAR(force_change, 0., 1e-12 * scale) << "component " << d;
+  }
 }
 } // namespace dyncontact::testing
