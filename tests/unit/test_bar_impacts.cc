@@ -113,20 +113,25 @@ void check_paper_case(const std::string& prm_file,
 // A: classical Newmark at the first contact step of 6.1, eqs. (17)-(18): with only the
 // displacement constrained, v_tip = 1 - gamma/beta and a_tip = -dt v0 / (beta dt^2). These are
 // exact consequences of the Newmark formulas, so only round-off separates them (1e-9 relative).
+// gamma = 0.6 (with beta = 0.3, unconditionally stable) catches a code that hard-wires gamma = 1/2:
+// v_tip = 1 - 0.6/0.3 = -1 where gamma = 1/2 would give -2/3.
 TEST(BarImpacts, ClassicalNewmarkFirstContactStepMatchesEquations17And18)
 {
-  for (const auto& [beta, expected_velocity, expected_acceleration] :
-       std::vector<std::tuple<std::string, double, double>>{{"0.001", -499., -1e4},
-                                                            {"0.25", -1., -40.}})
+  for (const auto& [beta, gamma, expected_velocity, expected_acceleration] :
+       std::vector<std::tuple<std::string, std::string, double, double>>{
+           {"0.001", "0.5", -499., -1e4},
+           {"0.25", "0.5", -1., -40.},
+           {"0.3", "0.6", -1., -100. / 3.}})
   {
     const BarRun run          = run_bar_case(rigid_wall,
                                     {"Contact/dynamics=none",
                                               "Time integration/beta=" + beta,
+                                              "Time integration/gamma=" + gamma,
                                               "Time integration/end time=0.1"});
     const double velocity     = run.history().value(1, "v_tip_1");
     const double acceleration = run.history().value(1, "a_tip_1");
-    std::cout << "  beta = " << beta << ": v_tip = " << velocity << ", a_tip = " << acceleration
-              << "\n";
+    std::cout << "  beta = " << beta << ", gamma = " << gamma << ": v_tip = " << velocity
+              << ", a_tip = " << acceleration << "\n";
     EXPECT_NEAR(velocity, expected_velocity, 1e-9 * std::abs(expected_velocity));
     EXPECT_NEAR(acceleration, expected_acceleration, 1e-9 * std::abs(expected_acceleration));
   }
