@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q_eulerian.h>
 
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <map>
 
@@ -48,6 +49,11 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
     for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
       if (fe.system_to_component_index(i).first == 0 && fe.has_support_on_face(i, face))
         nodes_of_face.back().emplace_back(i, node_of_first_dof.at(cell_dofs[i]));
+    const FiniteElement<dim>& scalar = fe.base_element(0);
+    support_point_nodes.emplace_back();
+    for (unsigned int j = 0; j < scalar.n_dofs_per_face(face); ++j)
+      support_point_nodes.back().push_back(node_of_first_dof.at(
+          cell_dofs[fe.component_to_system_index(0, scalar.face_to_cell_index(j, face))]));
   }
 }
 
@@ -138,6 +144,47 @@ ContactSurface<dim>::mass_matrix(const Vector<double>& displacement) const
   Eigen::SparseMatrix<double> mass(surface_nodes.size(), surface_nodes.size());
   mass.setFromTriplets(entries.begin(), entries.end());
   return mass;
+}
+
+template <int dim>
+std::vector<double>
+ContactSurface<dim>::consistent_pressures(const Vector<double>& displacement,
+                                          const std::vector<unsigned int>& surface_nodes_of_pairs,
+                                          const std::vector<double>& multipliers) const
+{
+  AssertDimension(multipliers.size(), surface_nodes_of_pairs.size());
+  std::vector<unsigned int> zone; // pairs whose node carries the pressure field
+  for (unsigned int k = 0; k < multipliers.size(); ++k)
+    if (multipliers[k] != 0.)
+      zone.push_back(k);
+  std::vector<double> pressures(multipliers.size(), 0.);
+  if (zone.empty())
+    return pressures;
+
+  // The surface mass matrix restricted to the zone's nodes, kept sparse.
+  const Eigen::SparseMatrix<double> mass = mass_matrix(displacement);
+  std::vector<int> zone_index(mass.rows(), -1); // surface node -> row in the zone, or -1
+  Eigen::VectorXd zone_forces(zone.size());
+  for (unsigned int i = 0; i < zone.size(); ++i)
+  {
+    zone_index[surface_nodes_of_pairs[zone[i]]] = i;
+    zone_forces(i)                              = multipliers[zone[i]];
+  }
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int column = 0; column < mass.outerSize(); ++column)
+    for (Eigen::SparseMatrix<double>::InnerIterator entry(mass, column); entry; ++entry)
+      if (zone_index[entry.row()] >= 0 && zone_index[entry.col()] >= 0)
+        entries.emplace_back(zone_index[entry.row()], zone_index[entry.col()], entry.value());
+  Eigen::SparseMatrix<double> zone_mass(zone.size(), zone.size());
+  zone_mass.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(zone_mass);
+  if (factorization.info() != Eigen::Success)
+    throw SolverFailure("the contact pressure recovery failed: the surface mass matrix of the "
+                        "contact zone is not positive definite (a collapsed contact face?)");
+  const Eigen::VectorXd zone_pressures = factorization.solve(zone_forces);
+  for (unsigned int i = 0; i < zone.size(); ++i)
+    pressures[zone[i]] = zone_pressures(i);
+  return pressures;
 }
 
 template class ContactSurface<1>;

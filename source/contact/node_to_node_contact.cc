@@ -1,6 +1,5 @@
 #include <dyncontact/contact/node_to_node_contact.h>
 
-#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <limits>
 #include <sstream>
@@ -75,17 +74,7 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
   if (unmatched == 0)
     for (const ContactPair<dim>& pair : candidate_pairs)
       if (pair.reference_gap() < -touching_tolerance)
-      {
-        std::ostringstream where;
-        where << pair.slave.position;
-        throw InputError("body " + std::to_string(pair.slave.body + 1) + " and body " +
-                         std::to_string(pair.masters[0].node.body + 1) +
-                         " overlap at t = 0: the node " + where.str() + " of body " +
-                         std::to_string(pair.slave.body + 1) + " lies " +
-                         format_number(-pair.reference_gap()) + " inside body " +
-                         std::to_string(pair.masters[0].node.body + 1) + " (bodies may touch, to " +
-                         format_number(touching_tolerance) + ", but not overlap).");
-      }
+        throw overlap_at_start(pair, touching_tolerance);
   if (unmatched > 0)
     throw InputError(std::to_string(unmatched) + " of the " +
                      std::to_string(unmatched + candidate_pairs.size()) +
@@ -118,38 +107,10 @@ NodeToNodeContact<dim>::contact_pressures(const Vector<double>& displacement,
                                           const std::vector<double>& multipliers) const
 {
   AssertDimension(multipliers.size(), candidate_pairs.size());
-  std::vector<unsigned int> zone; // pairs whose node A carries the pressure field
-  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
-    if (multipliers[k] != 0.)
-      zone.push_back(k);
-  std::vector<double> pressures(candidate_pairs.size(), 0.);
-  if (zone.empty())
-    return pressures;
-
-  // The surface mass matrix restricted to the zone's nodes, kept sparse.
-  const Eigen::SparseMatrix<double> mass = surface_a.mass_matrix(displacement);
-  std::vector<int> zone_index(mass.rows(), -1); // surface node -> row in the zone, or -1
-  Eigen::VectorXd zone_forces(zone.size());
-  for (unsigned int i = 0; i < zone.size(); ++i)
-  {
-    zone_index[surface_nodes_of_pair[zone[i]].first] = i;
-    zone_forces(i)                                   = multipliers[zone[i]];
-  }
-  std::vector<Eigen::Triplet<double>> entries;
-  for (int column = 0; column < mass.outerSize(); ++column)
-    for (Eigen::SparseMatrix<double>::InnerIterator entry(mass, column); entry; ++entry)
-      if (zone_index[entry.row()] >= 0 && zone_index[entry.col()] >= 0)
-        entries.emplace_back(zone_index[entry.row()], zone_index[entry.col()], entry.value());
-  Eigen::SparseMatrix<double> zone_mass(zone.size(), zone.size());
-  zone_mass.setFromTriplets(entries.begin(), entries.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(zone_mass);
-  if (factorization.info() != Eigen::Success)
-    throw SolverFailure("the contact pressure recovery failed: the surface mass matrix of the "
-                        "contact zone is not positive definite (a collapsed contact face?)");
-  const Eigen::VectorXd zone_pressures = factorization.solve(zone_forces);
-  for (unsigned int i = 0; i < zone.size(); ++i)
-    pressures[zone[i]] = zone_pressures(i);
-  return pressures;
+  std::vector<unsigned int> nodes_a_of_pairs;
+  for (const auto& nodes_of_pair : surface_nodes_of_pair)
+    nodes_a_of_pairs.push_back(nodes_of_pair.first);
+  return surface_a.consistent_pressures(displacement, nodes_a_of_pairs, multipliers);
 }
 
 template <int dim>

@@ -5,6 +5,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace dyncontact
@@ -54,4 +56,23 @@ public:
   virtual std::vector<double> contact_pressures(const Vector<double>& displacement,
                                                 const std::vector<double>& multipliers) const = 0;
 };
+
+/**
+ * The InputError a contact geometry's constructor throws for a pair whose reference gap is below
+ * -`touching_tolerance` [length] (the bodies overlap at t = 0): it names both bodies (1-based),
+ * where the slave node is and how deep it lies inside the master body.
+ */
+template <int dim>
+InputError overlap_at_start(const ContactPair<dim>& pair, const double touching_tolerance)
+{
+  std::ostringstream where;
+  where << pair.slave.position;
+  const std::string body_a = std::to_string(pair.slave.body + 1);
+  const std::string body_b = std::to_string(pair.masters[0].node.body + 1);
+  return InputError("body " + body_a + " and body " + body_b + " overlap at t = 0: the node " +
+                    where.str() + " of body " + body_a + " lies " +
+                    format_number(-pair.reference_gap()) + " inside body " + body_b +
+                    " (bodies may touch, to " + format_number(touching_tolerance) +
+                    ", but not overlap).");
+}
 } // namespace dyncontact

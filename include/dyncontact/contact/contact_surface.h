@@ -76,6 +76,30 @@ public:
    */
   Eigen::SparseMatrix<double> mass_matrix(const Vector<double>& displacement) const;
 
+  /**
+   * The nodes of every face, as indices into nodes(), in the order of the scalar element's unit
+   * face support points (FiniteElement::get_unit_face_support_points()): for a Q2 face in 2D the
+   * vertex at xi = 0, the vertex at xi = 1, then the mid-side node at xi = 1/2. One entry per face
+   * of the surface.
+   */
+  const std::vector<std::vector<unsigned int>>& face_nodes() const { return support_point_nodes; }
+
+  /**
+   * The consistent recovery of a contact pressure [force/area] from nodal forces: one pressure
+   * per entry of `surface_nodes_of_pairs` (indices into nodes(), one per contact pair) from the
+   * pairs' nodal forces `multipliers` (same length) at `displacement`. The contact zone is the
+   * support of the multipliers, the nodes whose pair has a nonzero multiplier (each node at most
+   * once). The pressure is p = sum over zone nodes j of p_j N_j and solves M_zz p_z = f_z, the
+   * rows and columns of the zone in mass_matrix() at `displacement`: the work of p on every zone
+   * node's shape function equals its nodal force. Pairs outside the zone get exactly 0. Exact for
+   * a pressure the zone's shape functions represent; it also gives the pressure at the axis node
+   * of an axisymmetric model, whose tributary area is zero. Throws SolverFailure if the zone's
+   * mass matrix is not positive definite (a collapsed face).
+   */
+  std::vector<double> consistent_pressures(const Vector<double>& displacement,
+                                           const std::vector<unsigned int>& surface_nodes_of_pairs,
+                                           const std::vector<double>& multipliers) const;
+
 private:
   const DoFHandler<dim>& dof_handler;
   const Kinematics<dim>& kinematics;
@@ -85,6 +109,8 @@ private:
   std::vector<std::pair<typename DoFHandler<dim>::active_cell_iterator, unsigned int>> faces;
   /** Per face: (local DoF of component 0, index in surface_nodes) of each of its nodes. */
   std::vector<std::vector<std::pair<unsigned int, unsigned int>>> nodes_of_face;
+  /** Per face: index in surface_nodes of each of its nodes, by unit face support point. */
+  std::vector<std::vector<unsigned int>> support_point_nodes;
 
   /**
    * Calls integrand(nodes_of_face[f], fe_values, q, measure) at every Gauss point q of every face f

@@ -78,16 +78,9 @@ public:
   std::vector<Tensor<1, dim>> current_normals(const Vector<double>& displacement) const;
 
   /**
-   * The contact pressure at every pair's node of surface A: the pressure field on the contact
-   * zone consistent with the nodal forces `multipliers` (one per pair, zero for inactive pairs).
-   * The contact zone is the support of the multipliers: the nodes of surface A whose pair has a
-   * nonzero multiplier. The pressure is p = sum over zone nodes j of p_j N_j, with N_j the
-   * surface's shape functions, and solves M_zz p_z = f_z, the rows and columns of the zone in the
-   * surface's consistent mass matrix (ContactSurface::mass_matrix) at `displacement`: the work of
-   * p on every zone node's shape function equals its nodal force. Open pairs (zero multiplier)
-   * carry no pressure: exactly 0. Exact for a pressure that the zone's shape functions represent;
-   * it also gives the pressure at the axis node of an axisymmetric model, whose tributary area is
-   * zero.
+   * The contact pressure at every pair's node of surface A, consistent with the nodal forces
+   * `multipliers` (one per pair, zero for inactive pairs): ContactSurface::consistent_pressures()
+   * of surface A at `displacement`. Open pairs (zero multiplier) carry exactly 0.
    */
   std::vector<double> contact_pressures(const Vector<double>& displacement,
                                         const std::vector<double>& multipliers) const override;

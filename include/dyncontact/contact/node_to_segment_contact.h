@@ -1,0 +1,96 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_geometry.h>
+#include <dyncontact/contact/contact_pair.h>
+#include <dyncontact/contact/contact_surface.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * Node-to-segment contact on Q2 faces (2D meridian plane): every slave node of body A is
+ * projected onto the curved master faces of body B (Wriggers, Computational Contact Mechanics,
+ * 2nd ed., ch. 4; Laursen, Computational Contact and Impact Mechanics, ch. 5), so that the meshes
+ * of the two surfaces need not match.
+ *
+ * Candidates (reference configuration, fixed for the run): a slave node is a candidate pair if
+ * some master face lies within `search_radius` [length] of it (the distance from the node to its
+ * closest point on the curved face, QuadraticFace::closest_point()); its candidate faces are all
+ * master faces within that distance. The search radius is thus how far a run can follow a slave
+ * node along the master surface (sliding plus approach) before it leaves its candidate faces;
+ * the sparsity pattern (coupled_dofs()) is built from them once.
+ *
+ * Pair at a displacement u (update_pairs(), and the reference pairs at u = 0): the slave node's
+ * current position is projected onto each candidate face in its current configuration,
+ * x(xi) = sum_i N_i(xi) (X_i + u_i), and the face with the nearest closest point is kept (at a
+ * vertex shared by two faces either, both give the same point and weights). A projection that
+ * falls outside all candidate faces is clamped to the nearest face end: the slave node is then
+ * held against that vertex, not against the surface beyond. masters = the face's three nodes with
+ * weights N_i(xi), and the normal n = -(sum_i N_i(xi) n_i^B) / |sum_i N_i(xi) n_i^B| with the
+ * current outward nodal normals n_i^B of the master surface (ContactSurface::normals()): the
+ * smoothed, continuous normal field rather than the face's own normal, so that n does not jump
+ * where a slave node crosses a vertex. Where a slave node projects onto a master node of matching
+ * meshes with n_A = -n_B (touching, mirrored surfaces), the pair is NodeToNodeContact's: weight 1
+ * on that node and the same normal, to round-off. As in NodeToNodeContact, the pairs are those of
+ * the last converged configuration within a time step (the gap is linear in u; Newton's tangent
+ * is exact for it); the rows n N_i leave out the change of xi and n with u.
+ *
+ * Penalty stiffness of a pair: `penalty_stiffness_per_area` [force/length^3] times the slave
+ * node's lumped reference area (ContactSurface::lumped_areas(), 2 pi r weighted in axisymmetry).
+ * The contact pressure is recovered on the slave surface (ContactSurface::consistent_pressures()).
+ *
+ * Only 2D meshes of Q2 elements (three support points per face); no self contact, no search
+ * beyond the reference candidate faces.
+ */
+template <int dim>
+class NodeToSegmentContact : public ContactGeometry<dim>
+{
+public:
+  /**
+   * Pairs the nodes of `slave_surface` (body A) with the faces of `master_surface` (body B) as
+   * described above. The bodies may touch at t = 0 but not overlap: a pair whose slave node lies
+   * within `touching_tolerance` [length] of its closest point starts closed, its slave position
+   * (in the pair only) being moved onto that point so that its reference gap is exactly zero;
+   * every later gap of the pair carries that offset, at most the tolerance. Non-matching
+   * discretizations of the same curved surface differ by the O(h^3) error of quadratic
+   * interpolation, which the tolerance must cover for touching bodies to start closed. A pair
+   * whose reference gap is below -`touching_tolerance` means overlap: InputError naming both
+   * bodies, where and how much. Also InputError if no slave node lies within `search_radius` of
+   * the master surface; AssertThrow if a face does not have three nodes (not Q2).
+   */
+  NodeToSegmentContact(ContactSurface<dim> slave_surface,
+                       ContactSurface<dim> master_surface,
+                       double penalty_stiffness_per_area,
+                       double search_radius,
+                       double touching_tolerance);
+
+  /** The candidate pairs with their reference masters, weights and normals. */
+  const std::vector<ContactPair<dim>>& pairs() const override { return candidate_pairs; }
+
+  /**
+   * Sets each pair's masters, weights and normal by projecting its slave node onto its candidate
+   * faces at `displacement` (a whole vector in the DoFHandler's numbering).
+   */
+  void update_pairs(const Vector<double>& displacement,
+                    std::vector<ContactPair<dim>>& pairs) const override;
+
+  /** The slave node's DoFs and those of every node of the pair's candidate faces. */
+  std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;
+
+  /** ContactSurface::consistent_pressures() of the slave surface at the pairs' slave nodes. */
+  std::vector<double> contact_pressures(const Vector<double>& displacement,
+                                        const std::vector<double>& multipliers) const override;
+
+private:
+  ContactSurface<dim> slave_surface, master_surface;
+  /** Per pair: index of its slave node in slave_surface.nodes(). */
+  std::vector<unsigned int> slave_node_of_pair;
+  /** Per pair: its candidate faces, indices into master_surface.face_nodes(). */
+  std::vector<std::vector<unsigned int>> candidate_faces_of_pair;
+  std::vector<ContactPair<dim>> candidate_pairs;
+};
+} // namespace dyncontact

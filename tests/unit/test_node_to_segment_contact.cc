@@ -1,0 +1,236 @@
+// Unit tests of node-to-segment contact on Q2 faces (NodeToSegmentContact, QuadraticFace) on the
+// paper's mirrored two-sphere mesh, coarse (Refinement 0, shortest edge 0.26 at the poles), and on
+// a single circular face; apart from any time stepping.
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/contact/node_to_segment_contact.h>
+#include <dyncontact/contact/quadratic_face.h>
+#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/gmsh_mesh.h>
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/manifold_lib.h>
+
+#include <cmath>
+#include <gtest/gtest.h>
+#include <memory>
+
+#include "case_run.h"
+
+namespace dyncontact::testing
+{
+namespace
+{
+/**
+ * The two spheres (R = 8) of meshes/two_spheres.geo with their centres `centre_distance` apart
+ * (16: touching at the poles, r = 0, z = 0), body 2 shifted along the axis by `body_2_shift`
+ * before the DoFs are numbered, its sphere manifolds moved with it (a negative shift makes the
+ * bodies overlap, which the .geo file itself refuses).
+ */
+struct TwoSpheres
+{
+  explicit TwoSpheres(const double centre_distance, const double body_2_shift = 0.)
+      : parameters(
+            ParameterReader(source_path("prm/spheres_rho0.001.prm"),
+                            {"Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: "
+                             "0.3, CentreDistance: " +
+                             format_exact(centre_distance)})
+                .parameters()),
+        model(parameters.mesh, parameters.bodies), dof_handler(triangulation), fe(FE_Q<2>(2), 2),
+        mapping(2)
+  {
+    model.create_triangulation(triangulation);
+    if (body_2_shift != 0.)
+    {
+      std::vector<bool> moved(triangulation.n_vertices(), false);
+      for (const auto& cell : triangulation.active_cell_iterators())
+        if (cell->material_id() == 1)
+          for (const unsigned int v : cell->vertex_indices())
+            if (!moved[cell->vertex_index(v)])
+            {
+              cell->vertex(v)[1] += body_2_shift;
+              moved[cell->vertex_index(v)] = true;
+            }
+      triangulation.set_manifold(
+          SphereMeshIds::surface_manifold(1),
+          SphericalManifold<2>(Point<2>(0., centre_distance / 2. + body_2_shift)));
+      TransfiniteInterpolationManifold<2> interior;
+      interior.initialize(triangulation);
+      triangulation.set_manifold(SphereMeshIds::interior_manifold, interior);
+    }
+    dof_handler.distribute_dofs(fe);
+    nodes      = std::make_unique<NodeIndex<2>>(dof_handler, mapping);
+    kinematics = model.create_kinematics();
+  }
+
+  ContactSurface<2> surface(const unsigned int body) const
+  {
+    return ContactSurface<2>(dof_handler, *kinematics, *nodes, SphereMeshIds::surface(body));
+  }
+
+  NodeToSegmentContact<2> node_to_segment(const double search_radius) const
+  {
+    return NodeToSegmentContact<2>(
+        surface(0),
+        surface(1),
+        1.,
+        search_radius,
+        model.contact_description(*nodes).surface_pair->touching_tolerance);
+  }
+
+  /** A rigid translation of body 2 by `shift`. */
+  Vector<double> translation_of_body_2(const Tensor<1, 2>& shift) const
+  {
+    Vector<double> displacement(dof_handler.n_dofs());
+    for (const auto& node : nodes->nodes())
+      if (node.body == 1)
+        for (unsigned int d = 0; d < 2; ++d)
+          displacement[node.dofs[d]] = shift[d];
+    return displacement;
+  }
+
+  RunParameters parameters;
+  AxisymmetricMeshModel model;
+  Triangulation<2> triangulation;
+  DoFHandler<2> dof_handler;
+  const FESystem<2> fe;
+  const MappingQ<2> mapping;
+  std::unique_ptr<NodeIndex<2>> nodes;
+  std::unique_ptr<Kinematics<2>> kinematics;
+};
+
+/** `pairs` moved to `displacement` by `geometry`. */
+std::vector<ContactPair<2>> moved_to(const ContactGeometry<2>& geometry,
+                                     const Vector<double>& displacement)
+{
+  std::vector<ContactPair<2>> pairs = geometry.pairs();
+  geometry.update_pairs(displacement, pairs);
+  return pairs;
+}
+
+/** xi of a Q2 face's weights (order of QuadraticFace::points): w_1 - w_0 = 2 xi - 1. */
+double face_parameter(const ContactPair<2>& pair)
+{
+  return 0.5 * (1. + pair.masters[1].weight - pair.masters[0].weight);
+}
+
+} // namespace
+
+// A non-matching configuration: body 2 of the touching spheres translated radially by 0.1 (0.4
+// of the pole's edge) and toward body 1 by 0.02. At the pairs the projection moved to:
+//  - ContactPair::gap equals n . (x(xi) - x_s) with x(xi) evaluated here from the face's current
+//    nodes and the Lagrange quadratics written out again (1e-12: round-off of sums of ~10 terms of
+//    coordinates ~10);
+//  - the projection is orthogonal, (x(xi) - x_s) . x'(xi) = 0 relative to |x - x_s| |x'| (1e-12:
+//    Newton stops at a step of 1e-14 and converges quadratically, so xi is exact to round-off),
+//    at every pair whose closest point is inside a face (not clamped to a vertex);
+//  - the gap's rows c_j n against central finite differences of the frozen pair's gap (1e-9: the
+//    frozen gap is linear in u, so the difference quotient is exact up to round-off over h = 1e-4).
+TEST(NodeToSegmentContact, GapIsTheDistanceAlongTheNormalToTheCurvedFace)
+{
+  const TwoSpheres spheres(16.);
+  const NodeToSegmentContact<2> contact = spheres.node_to_segment(0.5);
+  const Vector<double> displacement     = spheres.translation_of_body_2(Tensor<1, 2>({0.1, -0.02}));
+  const auto pairs                      = moved_to(contact, displacement);
+  unsigned int inside_a_face            = 0;
+  for (const ContactPair<2>& pair : pairs)
+  {
+    ASSERT_EQ(pair.masters.size(), 3u);
+    const double xi = face_parameter(pair);
+    const std::array<double, 3> shape{
+        {(1. - xi) * (1. - 2. * xi), xi * (2. * xi - 1.), 4. * xi * (1. - xi)}};
+    const std::array<double, 3> slope{{4. * xi - 3., 4. * xi - 1., 4. - 8. * xi}};
+    Tensor<1, 2> position, tangent;
+    for (unsigned int i = 0; i < 3; ++i)
+    {
+      const Point<2> x_i = current_position(pair.masters[i].node, displacement);
+      position += shape[i] * x_i;
+      tangent += slope[i] * x_i;
+    }
+    const Tensor<1, 2> offset = position - current_position(pair.slave, displacement);
+    EXPECT_NEAR(pair.gap(displacement), pair.normal * offset, 1e-12) << pair.slave.position;
+    if (xi > 0. && xi < 1.)
+    {
+      ++inside_a_face;
+      EXPECT_LE(std::abs(offset * tangent), 1e-12 * offset.norm() * tangent.norm())
+          << pair.slave.position;
+    }
+
+    const double h = 1e-4;
+    pair.for_each_node(
+        [&](const Node<2>& node, const double coefficient)
+        {
+          for (unsigned int d = 0; d < 2; ++d)
+          {
+            Vector<double> plus = displacement, minus = displacement;
+            plus[node.dofs[d]] += h;
+            minus[node.dofs[d]] -= h;
+            EXPECT_NEAR(
+                (pair.gap(plus) - pair.gap(minus)) / (2. * h), coefficient * pair.normal[d], 1e-9);
+          }
+        });
+  }
+  EXPECT_GE(inside_a_face, pairs.size() / 2);
+}
+
+// One face whose three nodes lie on a circle of radius R = 8 about the origin, at angles -alpha,
+// alpha and 0 (xi = 0, 1, 1/2), and slave points on the concentric circle R + d, d = 0.3, at
+// angles inside the face. The quadratic interpolates x(phi(xi)), phi = alpha (2 xi - 1), whose
+// third derivative in xi has length (2 alpha)^3 R; the Lagrange error bound
+// |x'''| / 6 max |xi (xi - 1/2) (xi - 1)| = (8 alpha^3 R / 6) (sqrt(3) / 36) = 0.0642 alpha^3 R
+// bounds how far the face lies from the circle, hence how far the distance is from d. Weights
+// sum to 1 to 1e-14 (three terms of size <= 1.125). Halving alpha divides the error by at least
+// 8 (O(h^3)) less 10 %; measured: by 16.0, since the symmetric arc's radial error is O(h^4).
+TEST(QuadraticFace, ProjectionOntoACircularFaceGivesTheRadiusDifference)
+{
+  const double radius = 8., d = 0.3;
+  const auto largest_error = [&](const double alpha)
+  {
+    const auto on_circle = [](const double r, const double angle)
+    { return Point<2>(r * std::sin(angle), r * std::cos(angle)); };
+    const QuadraticFace<2> face{
+        {{on_circle(radius, -alpha), on_circle(radius, alpha), on_circle(radius, 0.)}}};
+    double error = 0.;
+    for (const double fraction : {-0.95, -0.6, -0.3, 0., 0.2, 0.5, 0.8, 0.95})
+    {
+      const double angle    = fraction * alpha;
+      const Point<2> slave  = on_circle(radius + d, angle);
+      const auto projection = face.closest_point(slave);
+      const auto weights    = QuadraticFace<2>::shape_values(projection.xi);
+      EXPECT_NEAR(weights[0] + weights[1] + weights[2], 1., 1e-14);
+      EXPECT_GT(projection.xi, 0.);
+      EXPECT_LT(projection.xi, 1.);
+      EXPECT_LE(std::abs(projection.distance - d), 0.0642 * std::pow(alpha, 3) * radius)
+          << "alpha " << alpha << ", angle " << angle;
+      // The closest point lies on the ray through the slave point, to the same bound.
+      const Tensor<1, 2> ray = slave / slave.norm();
+      EXPECT_LE((projection.point - (ray * projection.point) * ray).norm(),
+                0.0642 * std::pow(alpha, 3) * radius);
+      error = std::max(error, std::abs(projection.distance - d));
+    }
+    return error;
+  };
+  const double coarse = largest_error(0.1), fine = largest_error(0.05);
+  EXPECT_GT(coarse, 0.);
+  EXPECT_GE(coarse / fine, 7.2);
+}
+
+// Spheres 16.05 apart with body 2 shifted 0.1 toward body 1: they overlap by 0.05 at the poles.
+TEST(NodeToSegmentContact, OverlapAtTheStartIsAnInputErrorNamingTheBodies)
+{
+  const TwoSpheres spheres(16.05, -0.1);
+  try
+  {
+    spheres.node_to_segment(0.5);
+    FAIL() << "no InputError";
+  }
+  catch (const InputError& error)
+  {
+    EXPECT_NE(std::string(error.what()).find("body 1 and body 2 overlap at t = 0"),
+              std::string::npos)
+        << error.what();
+  }
+}
+} // namespace dyncontact::testing
