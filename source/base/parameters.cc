@@ -511,6 +511,16 @@ void ContactParameters::declare_parameters(ParameterHandler& prm)
                     "Enforcement of the non-penetration condition g >= 0. lagrange multiplier: "
                     "exact, one multiplier unknown per candidate pair (saddle-point solve). "
                     "penalty: force eps <-g> along the normal (allows small penetration).");
+  prm.declare_entry(
+      "discretization",
+      "node-to-node",
+      Patterns::Selection(contact_discretization_names().selection()),
+      "How the two bodies' contact surfaces meet (axisymmetric meshes). node-to-node: each "
+      "facing node of body 1 against the node of body 2 across from it; the facing surfaces "
+      "must have matching nodes (mirrored meshes). node-to-segment: each surface node of body 1 "
+      "(slave) against its closest point on the curved quadratic faces of body 2 (master), "
+      "for any meshes; the paper's rate correction (Contact/dynamics) acts on the slave node "
+      "and the master face's nodes. Both are the same on matching meshes.");
   prm.declare_entry("penalty factor",
                     "auto",
                     Patterns::Anything(),
@@ -534,6 +544,8 @@ void ContactParameters::parse_parameters(ParameterHandler& prm)
   prm.enter_subsection("Contact");
   formulation = contact_formulation_names().parse(prm.get("formulation"), "Contact/formulation");
   dynamics    = contact_dynamics_names().parse(prm.get("dynamics"), "Contact/dynamics");
+  discretization =
+      contact_discretization_names().parse(prm.get("discretization"), "Contact/discretization");
   const std::string factor = prm.get("penalty factor");
   automatic_penalty        = factor == "auto";
   penalty_factor           = quasi_static_penalty_factor;

@@ -1,7 +1,16 @@
 #include <dyncontact/contact/contact_factory.h>
+#include <dyncontact/contact/node_to_segment_contact.h>
 
 namespace dyncontact
 {
+const NameTable<ContactDiscretization>& contact_discretization_names()
+{
+  static const NameTable<ContactDiscretization> names{
+      {"node-to-node", ContactDiscretization::node_to_node},
+      {"node-to-segment", ContactDiscretization::node_to_segment}};
+  return names;
+}
+
 namespace
 {
 template <int dim>
@@ -18,12 +27,32 @@ Contact<dim> build_contact(const ContactDescription<dim>& description,
     const auto& surfaces = *description.surface_pair;
     try
     {
-      contact.surfaces = std::make_unique<NodeToNodeContact<dim>>(
-          ContactSurface<dim>(dof_handler, kinematics, nodes, surfaces.surface_a),
-          ContactSurface<dim>(dof_handler, kinematics, nodes, surfaces.surface_b),
-          parameters.penalty_factor * surfaces.stiffness_modulus / surfaces.stiffness_length,
-          surfaces.matching_tolerance,
-          surfaces.touching_tolerance);
+      ContactSurface<dim> surface_a(dof_handler, kinematics, nodes, surfaces.surface_a);
+      ContactSurface<dim> surface_b(dof_handler, kinematics, nodes, surfaces.surface_b);
+      const double penalty_per_area =
+          parameters.penalty_factor * surfaces.stiffness_modulus / surfaces.stiffness_length;
+      switch (parameters.discretization)
+      {
+      case ContactDiscretization::node_to_node:
+        contact.surfaces = std::make_unique<NodeToNodeContact<dim>>(std::move(surface_a),
+                                                                    std::move(surface_b),
+                                                                    penalty_per_area,
+                                                                    surfaces.matching_tolerance,
+                                                                    surfaces.touching_tolerance);
+        break;
+      case ContactDiscretization::node_to_segment:
+        if constexpr (dim != 2)
+          throw InputError("Contact/discretization = node-to-segment is implemented for 2D "
+                           "(axisymmetric) meshes only.");
+        else
+          contact.surfaces =
+              std::make_unique<NodeToSegmentContact<dim>>(std::move(surface_a),
+                                                          std::move(surface_b),
+                                                          penalty_per_area,
+                                                          surfaces.search_radius,
+                                                          surfaces.touching_tolerance);
+        break;
+      }
     }
     catch (const InputError& error)
     {

@@ -2,7 +2,9 @@
 #include <dyncontact/contact/quadratic_face.h>
 
 #include <algorithm>
+#include <array>
 #include <limits>
+#include <optional>
 
 namespace dyncontact
 {
@@ -21,37 +23,93 @@ QuadraticFace<dim> current_face(const ContactSurface<dim>& surface,
   return curve;
 }
 
+/** a x b of two vectors of the plane (its out-of-plane component). */
+template <int dim>
+double cross(const Tensor<1, dim>& a, const Tensor<1, dim>& b)
+{
+  return a[0] * b[1] - a[1] * b[0];
+}
+
 /**
- * Sets `pair`'s masters, weights and normal from the nearest of `faces` of `master_surface` at
- * `displacement`, with the master surface's nodal normals `master_normals` there.
+ * The point of `face` on the ray from `x_s` along the averaged normal: xi with
+ * (x(xi) - x_s) x nbar(xi) = 0, nbar(xi) = n_s - sum_i N_i(xi) n_i (the slave node's normal and
+ * the face nodes' `normals`), by Newton's method from `start`. Empty if Newton does not converge
+ * to a step below 1e-14 in 20 iterations or the root lies outside the face (beyond 1e-12).
+ */
+template <int dim>
+std::optional<double> normal_ray_point(const QuadraticFace<dim>& face,
+                                       const std::array<Tensor<1, dim>, 3>& normals,
+                                       const Point<dim>& x_s,
+                                       const Tensor<1, dim>& n_s,
+                                       double xi)
+{
+  for (unsigned int iteration = 0; iteration < 20; ++iteration)
+  {
+    const auto N = QuadraticFace<dim>::shape_values(xi);
+    const std::array<double, 3> dN{{4. * xi - 3., 4. * xi - 1., 4. - 8. * xi}};
+    Tensor<1, dim> nbar = n_s, dnbar;
+    for (unsigned int i = 0; i < 3; ++i)
+    {
+      nbar -= N[i] * normals[i];
+      dnbar -= dN[i] * normals[i];
+    }
+    const Tensor<1, dim> offset = face.point(xi) - x_s;
+    const double slope          = cross(face.tangent(xi), nbar) + cross(offset, dnbar);
+    if (slope == 0.)
+      return std::nullopt;
+    const double step = cross(offset, nbar) / slope;
+    xi -= step;
+    if (std::abs(step) <= 1e-14)
+      return xi >= -1e-12 && xi <= 1. + 1e-12 ? std::optional<double>(std::clamp(xi, 0., 1.))
+                                              : std::nullopt;
+  }
+  return std::nullopt;
+}
+
+/**
+ * Sets `pair`'s masters, weights and normal from `faces` of `master_surface` at `displacement`,
+ * with the slave node's current normal `slave_normal` and the master surface's nodal normals
+ * `master_normals` there: the master point is where the ray from the slave node along the
+ * averaged normal meets a face (the nearest such point), else the closest point of the faces.
  */
 template <int dim>
 void project_onto_faces(const ContactSurface<dim>& master_surface,
                         const std::vector<unsigned int>& faces,
                         const Vector<double>& displacement,
+                        const Tensor<1, dim>& slave_normal,
                         const std::vector<Tensor<1, dim>>& master_normals,
                         ContactPair<dim>& pair)
 {
   const Point<dim> slave_point = current_position(pair.slave, displacement);
-  unsigned int nearest_face    = faces.front();
-  auto nearest =
-      current_face(master_surface, nearest_face, displacement).closest_point(slave_point);
+  unsigned int chosen_face     = faces.front();
+  double chosen_xi = 0., chosen_distance = std::numeric_limits<double>::max();
+  bool on_ray = false;
   for (const unsigned int face : faces)
   {
-    const auto projection =
-        current_face(master_surface, face, displacement).closest_point(slave_point);
-    if (projection.distance < nearest.distance)
+    const auto curve       = current_face(master_surface, face, displacement);
+    const auto closest     = curve.closest_point(slave_point);
+    const auto& face_nodes = master_surface.face_nodes()[face];
+    const std::array<Tensor<1, dim>, 3> normals{{master_normals[face_nodes[0]],
+                                                 master_normals[face_nodes[1]],
+                                                 master_normals[face_nodes[2]]}};
+    const auto ray_xi     = normal_ray_point(curve, normals, slave_point, slave_normal, closest.xi);
+    const double xi       = ray_xi ? *ray_xi : closest.xi;
+    const double distance = curve.point(xi).distance(slave_point);
+    // A point on the ray beats any closest point; among equals, the nearest.
+    if ((ray_xi && !on_ray) || (bool(ray_xi) == on_ray && distance < chosen_distance))
     {
-      nearest_face = face;
-      nearest      = projection;
+      chosen_face     = face;
+      chosen_xi       = xi;
+      chosen_distance = distance;
+      on_ray          = bool(ray_xi);
     }
   }
-  const auto weights = QuadraticFace<dim>::shape_values(nearest.xi);
-  Tensor<1, dim> normal;
+  const auto weights    = QuadraticFace<dim>::shape_values(chosen_xi);
+  Tensor<1, dim> normal = slave_normal;
   pair.masters.clear();
   for (unsigned int i = 0; i < 3; ++i)
   {
-    const unsigned int node = master_surface.face_nodes()[nearest_face][i];
+    const unsigned int node = master_surface.face_nodes()[chosen_face][i];
     pair.masters.push_back({master_surface.nodes()[node], weights[i]});
     normal -= weights[i] * master_normals[node];
   }
@@ -74,6 +132,7 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
                 ExcMessage("node-to-segment contact needs Q2 faces in 2D (three nodes a face)"));
   const Vector<double> undeformed(this->slave_surface.n_dofs());
   const auto slave_areas    = this->slave_surface.lumped_areas(undeformed);
+  const auto slave_normals  = this->slave_surface.normals(undeformed);
   const auto master_normals = this->master_surface.normals(undeformed);
 
   for (unsigned int i = 0; i < slave_nodes.size(); ++i)
@@ -89,7 +148,8 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
     ContactPair<dim> pair;
     pair.slave             = slave_nodes[i];
     pair.penalty_stiffness = penalty_stiffness_per_area * slave_areas[i];
-    project_onto_faces(this->master_surface, faces, undeformed, master_normals, pair);
+    project_onto_faces(
+        this->master_surface, faces, undeformed, slave_normals[i], master_normals, pair);
     Point<dim> closest_point;
     for (const MasterNode<dim>& master : pair.masters)
       closest_point += master.weight * master.node.position;
@@ -114,10 +174,15 @@ template <int dim>
 void NodeToSegmentContact<dim>::update_pairs(const Vector<double>& displacement,
                                              std::vector<ContactPair<dim>>& pairs) const
 {
+  const auto slave_normals  = slave_surface.normals(displacement);
   const auto master_normals = master_surface.normals(displacement);
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    project_onto_faces(
-        master_surface, candidate_faces_of_pair[k], displacement, master_normals, pairs[k]);
+    project_onto_faces(master_surface,
+                       candidate_faces_of_pair[k],
+                       displacement,
+                       slave_normals[slave_node_of_pair[k]],
+                       master_normals,
+                       pairs[k]);
 }
 
 template <int dim>

@@ -2,6 +2,7 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/name_table.h>
+#include <dyncontact/contact/contact_discretization.h>
 #include <dyncontact/contact_dynamics/contact_dynamics_kind.h>
 
 #include <deal.II/base/parameter_handler.h>
@@ -54,6 +55,7 @@ struct ContactParameters
 {
   ContactFormulation formulation;
   ContactDynamicsKind dynamics;
+  ContactDiscretization discretization;
   /// penalty stiffness of a pair = this factor times E A / h of the stiffer side (dimensionless);
   /// with `automatic_penalty` the factor the models start from (quasi_static_penalty_factor),
   /// which create_contact() lowers for wave problems (size_automatic_penalty())

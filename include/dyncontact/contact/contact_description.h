@@ -33,8 +33,9 @@ struct ContactDescription
   };
 
   /**
-   * Node-to-node contact between two boundaries whose nodes face each other (mirrored meshes);
-   * the pairs' normals follow the deformation (NodeToNodeContact).
+   * Contact between two boundaries (surface_a: the slave side, body A; surface_b: the master
+   * side), discretized as Contact/discretization says (NodeToNodeContact for mirrored meshes,
+   * NodeToSegmentContact for any); the pairs follow the deformation.
    */
   struct SurfacePair
   {
@@ -43,7 +44,10 @@ struct ContactDescription
     /// the penalty per unit contact area is factor x stiffness_modulus / stiffness_length
     double stiffness_modulus;  ///< [force/area], the stiffer body's Young's modulus
     double stiffness_length;   ///< [length], e.g. the shortest cell edge
-    double matching_tolerance; ///< [length], facing nodes must coincide across to this
+    double matching_tolerance; ///< [length], node-to-node: facing nodes coincide across to this
+    /// [length], node-to-segment: how far from the master surface (at t = 0) a slave node and its
+    /// candidate faces may lie, the approach plus the sliding a run can follow
+    double search_radius;
     double touching_tolerance; ///< [length], a gap above -this at t = 0 is touching, not overlap
     std::string source;        ///< what errors name, e.g. "Mesh/file = 'two_spheres.geo'"
   };

@@ -24,20 +24,21 @@ namespace dyncontact
  * node along the master surface (sliding plus approach) before it leaves its candidate faces;
  * the sparsity pattern (coupled_dofs()) is built from them once.
  *
- * Pair at a displacement u (update_pairs(), and the reference pairs at u = 0): the slave node's
- * current position is projected onto each candidate face in its current configuration,
- * x(xi) = sum_i N_i(xi) (X_i + u_i), and the face with the nearest closest point is kept (at a
- * vertex shared by two faces either, both give the same point and weights). A projection that
- * falls outside all candidate faces is clamped to the nearest face end: the slave node is then
- * held against that vertex, not against the surface beyond. masters = the face's three nodes with
- * weights N_i(xi), and the normal n = -(sum_i N_i(xi) n_i^B) / |sum_i N_i(xi) n_i^B| with the
- * current outward nodal normals n_i^B of the master surface (ContactSurface::normals()): the
- * smoothed, continuous normal field rather than the face's own normal, so that n does not jump
- * where a slave node crosses a vertex. Where a slave node projects onto a master node of matching
- * meshes with n_A = -n_B (touching, mirrored surfaces), the pair is NodeToNodeContact's: weight 1
- * on that node and the same normal, to round-off. As in NodeToNodeContact, the pairs are those of
- * the last converged configuration within a time step (the gap is linear in u; Newton's tangent
- * is exact for it); the rows n N_i leave out the change of xi and n with u.
+ * Pair at a displacement u (update_pairs(), and the reference pairs at u = 0): on each candidate
+ * face in its current configuration, x(xi) = sum_i N_i(xi) (X_i + u_i), the master point is where
+ * the ray from the slave node's current position x_s along the averaged normal
+ * nbar(xi) = n_s - sum_i N_i(xi) n_i^B meets the face, (x(xi) - x_s) x nbar(xi) = 0 (Newton's
+ * method from the closest point; n_s the slave surface's and n_i^B the master surface's current
+ * outward nodal normals, ContactSurface::normals()); of the faces with such a point the nearest
+ * is kept, and if no face has one the closest point of the faces (clamped to a face end) is used.
+ * masters = the face's three nodes with weights N_i(xi), and the normal n = nbar / |nbar| (from A
+ * toward B), continuous where a slave node crosses a vertex. This is NodeToNodeContact's pairing
+ * and normal on matching meshes: for mirrored surfaces the ray along (n_A - n_B) from a slave node
+ * meets its mirror node (xi at that node, weight 1 up to round-off), also while the pair is open,
+ * so both discretizations give the same active sets (the ctest
+ * cli.node_to_segment_matches_node_to_node_on_matching_meshes). As in NodeToNodeContact, the
+ * pairs are those of the last converged configuration within a time step (the gap is linear in
+ * u; Newton's tangent is exact for it); the rows n N_i leave out the change of xi and n with u.
  *
  * Penalty stiffness of a pair: `penalty_stiffness_per_area` [force/length^3] times the slave
  * node's lumped reference area (ContactSurface::lumped_areas(), 2 pi r weighted in axisymmetry).

@@ -33,11 +33,12 @@ public:
   /** Body b's `Initial velocity` at X; throws InputError if it is not finite there. */
   Tensor<1, 2> initial_velocity(types::material_id body, const Point<2>& X) const override;
   /**
-   * With two bodies: node-to-node contact between their sphere surfaces (boundary ids
-   * SphereMeshIds::surface(0) and (1)), which must have matching facing nodes and must not
-   * overlap (they may touch, to touching_tolerance(), and then start closed); the penalty
-   * stiffness scale per unit contact area is E / h_min (E of the stiffer body, h_min the shortest
-   * cell edge). With one body: no contact. More than two bodies are rejected (InputError).
+   * With two bodies: contact between their sphere surfaces (boundary ids SphereMeshIds::surface(0),
+   * the slave side, and (1), the master side), discretized by Contact/discretization: node-to-node
+   * needs matching facing nodes (to 1e-6 h_min), node-to-segment searches within search_radius().
+   * They must not overlap (they may touch, to touching_tolerance(), and then start closed); the
+   * penalty stiffness scale per unit contact area is E / h_min (E of the stiffer body, h_min the
+   * shortest cell edge). With one body: no contact. More than two bodies are rejected (InputError).
    */
   ContactDescription<2> contact_description(const NodeIndex<2>& nodes) const override;
   std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
@@ -62,11 +63,12 @@ public:
                      const History& history,
                      std::ostream& log) const override;
   /**
-   * Hertz's theory of this impact if it applies: two spheres of equal radius and equal material
-   * constants whose centres approach along the axis with the initial velocities given (evaluated at
-   * the centres); first touch at (distance of the centres - 2 R) / approach speed, at t = 0 if
-   * they touch to touching_tolerance(). Empty otherwise (one body, other shapes, dissimilar
-   * spheres, overlapping spheres, spheres not approaching). Valid after create_triangulation().
+   * Hertz's theory of this impact if it applies: two spheres (any radii and material constants,
+   * HertzImpact::two_spheres from R*, E*, m*) whose centres approach along the axis with the
+   * initial velocities given (evaluated at the centres); first touch at (distance of the centres -
+   * R1 - R2) / approach speed, at t = 0 if they touch to touching_tolerance(). Empty otherwise
+   * (one body, other shapes, overlapping spheres, spheres not approaching). Valid after
+   * create_triangulation().
    */
   std::optional<HertzImpact> hertz_reference() const;
   void print_summary(std::ostream& out, double time_step) const override;
@@ -78,6 +80,11 @@ private:
    * Valid after create_triangulation().
    */
   double touching_tolerance() const;
+  /**
+   * Node-to-segment search radius [length]: the spheres' initial gap plus a quarter of the
+   * smaller radius. Valid after create_triangulation().
+   */
+  double search_radius() const;
 
   /** Dilatational wave speed sqrt((lambda + 2 mu) / rho) of body b. */
   double dilatational_wave_speed(unsigned int body) const;
