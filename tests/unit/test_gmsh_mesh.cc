@@ -8,161 +8,31 @@
 //    the edge and the element layer at the contact poles, Q2 nodes in the contact radius, no
 //    slender cells, the facing surfaces mirrored;
 //  - all cells quadrilaterals with a positive Jacobian at every Gauss point of the Q2 mapping;
-//  - a second-order .msh file (9-node quadrilaterals) read on its vertices;
+//  - a second-order .msh file (9-node quadrilaterals) read on its vertices (sphere.geo and the
+//    sphere pairs of test_general_meshes.cc);
 //  - bad input: every kind gives one line of InputError naming the file.
 #include <dyncontact/models/gmsh_mesh.h>
 
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_q.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/reference_cell.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <gmsh.h>
 #include <gtest/gtest.h>
 #include <iostream>
-#include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
+#include "mesh_checks.h"
+
 namespace
 {
 using namespace dyncontact;
+using namespace dyncontact::testing;
 
-const std::string sphere_geo      = std::string(DYNCONTACT_SOURCE_DIR) + "/meshes/sphere.geo";
-const std::string two_spheres_geo = std::string(DYNCONTACT_SOURCE_DIR) + "/meshes/two_spheres.geo";
-
-/**
- * Volume of the solid of revolution of `body`, integral of 2 pi r dA, with the Q2 mapping.
- * QGauss<2>(3) integrates r det J exactly (degree 5 per direction on a Q2 cell), so the error is
- * the geometry's alone.
- */
-double body_volume(const Triangulation<2>& triangulation, const types::material_id body)
-{
-  const MappingQ<2> mapping(2);
-  const FE_Q<2> fe(1);
-  FEValues<2> fe_values(mapping, fe, QGauss<2>(3), update_quadrature_points | update_JxW_values);
-  double volume = 0;
-  for (const auto& cell : triangulation.active_cell_iterators())
-    if (cell->material_id() == body)
-    {
-      fe_values.reinit(cell);
-      for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-        volume += 2 * numbers::PI * fe_values.quadrature_point(q)[0] * fe_values.JxW(q);
-    }
-  return volume;
-}
-
-double relative_volume_error(const Triangulation<2>& triangulation, const double radius)
-{
-  const double exact = 4. / 3. * numbers::PI * std::pow(radius, 3);
-  return std::abs(body_volume(triangulation, 0) - exact) / exact;
-}
-
-/** Vertices on the boundary with the given id, each once. */
-std::vector<Point<2>> boundary_vertices(const Triangulation<2>& triangulation,
-                                        const types::boundary_id id)
-{
-  std::vector<bool> taken(triangulation.n_vertices(), false);
-  std::vector<Point<2>> points;
-  for (const auto& face : triangulation.active_face_iterators())
-    if (face->at_boundary() && face->boundary_id() == id)
-      for (unsigned int v = 0; v < 2; ++v)
-        if (!taken[face->vertex_index(v)])
-        {
-          taken[face->vertex_index(v)] = true;
-          points.push_back(face->vertex(v));
-        }
-  return points;
-}
-
-/** Largest distance from a point of `points` to the nearest of `targets`. */
-double largest_mismatch(const std::vector<Point<2>>& points, const std::vector<Point<2>>& targets)
-{
-  double largest = 0;
-  for (const Point<2>& point : points)
-  {
-    double nearest = std::numeric_limits<double>::max();
-    for (const Point<2>& target : targets)
-      nearest = std::min(nearest, point.distance(target));
-    largest = std::max(largest, nearest);
-  }
-  return largest;
-}
-
-/** Number of Gauss points (QGauss<2>(3)) where the Q2 mapping's Jacobian is not positive. */
-unsigned int count_nonpositive_jacobians(const Triangulation<2>& triangulation)
-{
-  const MappingQ<2> mapping(2);
-  const FE_Q<2> fe(1);
-  FEValues<2> fe_values(mapping, fe, QGauss<2>(3), update_jacobians);
-  unsigned int n_bad = 0;
-  for (const auto& cell : triangulation.active_cell_iterators())
-  {
-    fe_values.reinit(cell);
-    for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
-      if (!(determinant(Tensor<2, 2>(fe_values.jacobian(q))) > 0))
-        ++n_bad;
-  }
-  return n_bad;
-}
-
-/** A fresh directory for test files, removed with everything in it at the end of the test. */
-class ScratchDirectory
-{
-public:
-  ScratchDirectory()
-  {
-    std::string name_template =
-        (std::filesystem::temp_directory_path() / "dyncontact-test-XXXXXX").string();
-    path = mkdtemp(name_template.data());
-  }
-  ~ScratchDirectory() { std::filesystem::remove_all(path); }
-
-  /** The full name of the file `name` in the directory. */
-  std::string file(const std::string& name) const { return (path / name).string(); }
-
-  /** Writes `content` into the file `name` of the directory and returns its full name. */
-  std::string write(const std::string& name, const std::string& content) const
-  {
-    std::ofstream(file(name)) << content;
-    return file(name);
-  }
-
-private:
-  std::filesystem::path path;
-};
-
-/**
- * Expects read_gmsh_mesh(filename, parameters) to throw InputError whose message is one line,
- * names the file and contains `expected_text`; the triangulation must be left empty.
- */
-void expect_input_error(const std::string& filename,
-                        const std::map<std::string, double>& parameters,
-                        const std::string& expected_text)
-{
-  Triangulation<2> triangulation;
-  try
-  {
-    read_gmsh_mesh(filename, parameters, triangulation);
-    ADD_FAILURE() << "no InputError for " << filename;
-  }
-  catch (const InputError& error)
-  {
-    const std::string message = error.what();
-    std::cout << "  InputError: " << message << std::endl;
-    EXPECT_NE(message.find(filename), std::string::npos) << message;
-    EXPECT_NE(message.find(expected_text), std::string::npos) << message;
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    EXPECT_EQ(triangulation.n_cells(), 0u);
-  }
-}
+const std::string sphere_geo      = mesh_path("sphere.geo");
+const std::string two_spheres_geo = mesh_path("two_spheres.geo");
 
 /** A gmsh 2.2 mesh of the unit square cell [0, 1]^2 with the given element lines. */
 std::string unit_square_msh(const std::string& elements)
@@ -181,7 +51,7 @@ TEST(GmshMesh, SphereVolumeConvergesUnderRefinement)
   EXPECT_NEAR(spheres[0].radius, 8, 1e-12);
   EXPECT_NEAR(spheres[0].centre.distance(Point<2>(0, 0)), 0, 1e-12);
 
-  const double default_error = relative_volume_error(triangulation, spheres[0].radius);
+  const double default_error = relative_sphere_volume_error(triangulation, 0, spheres[0].radius);
   std::cout << "  sphere.geo default: " << triangulation.n_active_cells()
             << " cells, relative volume error " << default_error << std::endl;
   // The bound asked of the default mesh (24 edges on the half circumference); the Q2 boundary is
@@ -194,7 +64,7 @@ TEST(GmshMesh, SphereVolumeConvergesUnderRefinement)
   {
     Triangulation<2> refined;
     read_gmsh_mesh(sphere_geo, {{"Refinement", refinement}}, refined);
-    const double error = relative_volume_error(refined, spheres[0].radius);
+    const double error = relative_sphere_volume_error(refined, 0, spheres[0].radius);
     std::cout << "  sphere.geo Refinement " << refinement << ": " << refined.n_active_cells()
               << " cells, relative volume error " << error << std::endl;
     // Fourth order would give 16 per level; 8 leaves room for the graded (non-nested) meshes.
@@ -207,7 +77,7 @@ TEST(GmshMesh, SphereVolumeConvergesUnderRefinement)
   for (unsigned int level = 1; level <= 2; ++level)
   {
     triangulation.refine_global(1);
-    const double error = relative_volume_error(triangulation, spheres[0].radius);
+    const double error = relative_sphere_volume_error(triangulation, 0, spheres[0].radius);
     std::cout << "  sphere.geo default + refine_global(" << level
               << "): " << triangulation.n_active_cells() << " cells, relative volume error "
               << error << std::endl;
@@ -293,19 +163,6 @@ TEST(GmshMesh, TwoSpheresAreMirrorImages)
   EXPECT_NEAR(edge_at_far_pole / edge_at_contact_pole, 3, 0.05);
 }
 
-/** Length of the boundary face with id `id` that has a vertex at `point` (0 if there is none). */
-double boundary_edge_at(const Triangulation<2>& triangulation,
-                        const types::boundary_id id,
-                        const Point<2>& point)
-{
-  for (const auto& face : triangulation.active_face_iterators())
-    if (face->at_boundary() && face->boundary_id() == id)
-      for (unsigned int v = 0; v < 2; ++v)
-        if (face->vertex(v).distance(point) < 1e-12)
-          return face->vertex(0).distance(face->vertex(1));
-  return 0;
-}
-
 /** Largest ratio of the mean lengths of a cell's two pairs of opposite edges. */
 double largest_aspect_ratio(const Triangulation<2>& triangulation)
 {
@@ -359,11 +216,8 @@ TEST(GmshMesh, HertzFamilyResolvesTheContactPoles)
     const std::vector<Point<2>> surface_2 =
         boundary_vertices(triangulation, SphereMeshIds::surface(1));
     unsigned int n_contact_nodes = 0;
-    for (const Point<2>& vertex : surface_1)
-      n_contact_nodes += vertex[0] < 0.47;
-    for (const auto& face : triangulation.active_face_iterators())
-      if (face->at_boundary() && face->boundary_id() == SphereMeshIds::surface(0))
-        n_contact_nodes += face->center(/*respect_manifold=*/true)[0] < 0.47;
+    for (const Point<2>& node : boundary_q2_nodes(triangulation, SphereMeshIds::surface(0)))
+      n_contact_nodes += node[0] < 0.47;
 
     std::vector<Point<2>> mirrored_surface_1;
     for (const Point<2>& vertex : surface_1)
@@ -431,37 +285,36 @@ TEST(GmshMesh, ReadsMshFilesLikeGeoFiles)
 
 TEST(GmshMesh, ReadsSecondOrderMshFilesOnTheirVertices)
 {
-  // sphere.geo (Refinement 0) exported with 9-node quadrilaterals, as by `gmsh -2 -order 2`: read
-  // on its vertices, it is the first-order mesh of the same file, cell by cell; the mapping curves
-  // the boundary in both.
-  const ScratchDirectory directory;
-  const std::string msh_file = directory.file("sphere_order_2.msh");
-  gmsh::initialize(0, nullptr, false);
-  gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::open(sphere_geo);
-  gmsh::option::setNumber("Mesh.RecombineAll", 1);
-  gmsh::model::mesh::generate(2);
-  gmsh::model::mesh::setOrder(2);
-  std::vector<int> types;
-  gmsh::model::mesh::getElementTypes(types, 2);
-  gmsh::write(msh_file);
-  gmsh::finalize();
-  ASSERT_EQ(types, std::vector<int>{10}); // gmsh's 9-node quadrilateral
-
-  Triangulation<2> from_msh, from_geo;
-  read_gmsh_mesh(msh_file, {}, from_msh);
-  read_gmsh_mesh(sphere_geo, {}, from_geo);
-  ASSERT_EQ(from_msh.n_active_cells(), from_geo.n_active_cells());
-  ASSERT_EQ(from_msh.n_vertices(), from_geo.n_vertices());
-  for (auto msh_cell = from_msh.begin_active(), geo_cell = from_geo.begin_active();
-       msh_cell != from_msh.end();
-       ++msh_cell, ++geo_cell)
+  // sphere.geo (Refinement 0) and the sphere pairs on non-matching meshes exported with 9-node
+  // quadrilaterals, as by `gmsh -2 -order 2`: read on its vertices, each is the first-order mesh
+  // of the same file, cell by cell; the mapping curves the boundary in both.
+  for (const std::string& geo_file :
+       {sphere_geo, mesh_path("two_spheres_nonmatching.geo"), mesh_path("dissimilar_spheres.geo")})
   {
-    EXPECT_EQ(msh_cell->material_id(), geo_cell->material_id());
-    for (const unsigned int v : msh_cell->vertex_indices())
-      EXPECT_LT(msh_cell->vertex(v).distance(geo_cell->vertex(v)), 1e-12);
+    const ScratchDirectory directory;
+    const std::string msh_file = directory.file("order_2.msh");
+    // 10: gmsh's 9-node quadrilateral
+    ASSERT_EQ(write_second_order_msh(geo_file, {}, msh_file), std::vector<int>{10});
+
+    Triangulation<2> from_msh, from_geo;
+    const unsigned int n_bodies = read_gmsh_mesh(msh_file, {}, from_msh).size();
+    read_gmsh_mesh(geo_file, {}, from_geo);
+    ASSERT_EQ(from_msh.n_active_cells(), from_geo.n_active_cells()) << geo_file;
+    ASSERT_EQ(from_msh.n_vertices(), from_geo.n_vertices()) << geo_file;
+    for (auto msh_cell = from_msh.begin_active(), geo_cell = from_geo.begin_active();
+         msh_cell != from_msh.end();
+         ++msh_cell, ++geo_cell)
+    {
+      EXPECT_EQ(msh_cell->material_id(), geo_cell->material_id());
+      for (const unsigned int v : msh_cell->vertex_indices())
+        EXPECT_LT(msh_cell->vertex(v).distance(geo_cell->vertex(v)), 1e-12);
+    }
+    for (types::material_id body = 0; body < n_bodies; ++body)
+      EXPECT_NEAR(body_volume(from_msh, body),
+                  body_volume(from_geo, body),
+                  1e-12 * body_volume(from_geo, body))
+          << geo_file;
   }
-  EXPECT_NEAR(body_volume(from_msh, 0), body_volume(from_geo, 0), 1e-12 * body_volume(from_geo, 0));
 }
 
 TEST(GmshMesh, BadInputGivesOneLineNamingTheFile)
