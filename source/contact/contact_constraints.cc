@@ -200,25 +200,25 @@ template <int dim>
 typename ContactConstraints<dim>::SideForces
 ContactConstraints<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
                                                const Vector<double>& acceleration,
-                                               const Vector<double>& net_internal_force) const
+                                               const Vector<double>& net_internal_force,
+                                               const Tensor<1, dim>& direction) const
 {
+  // Every node of an active pair between bodies counts once, on its side (a slave node on A, a
+  // master node on B), however many pairs hold it (node-to-segment).
   SideForces forces{0., 0.};
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k] && !pairs[k].against_wall())
-      forces.on_a -= normal_balance(
-          pairs[k].slave, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
-  // A master node may serve several pairs (node-to-segment): each counts once, along the normal
-  // of the first active pair that holds it.
   std::vector<bool> counted(lumped_mass.size(), false);
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k])
-      for (const MasterNode<dim>& master : pairs[k].masters)
-        if (!counted[master.node.dofs[0]])
-        {
-          counted[master.node.dofs[0]] = true;
-          forces.on_b += normal_balance(
-              master.node, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
-        }
+    if (active[k] && !pairs[k].against_wall())
+      pairs[k].for_each_node(
+          [&](const Node<dim>& node, const double coefficient)
+          {
+            if (counted[node.dofs[0]])
+              return;
+            counted[node.dofs[0]] = true;
+            const double balance =
+                normal_balance(node, direction, lumped_mass, acceleration, net_internal_force);
+            (coefficient < 0. ? forces.on_a : forces.on_b) += coefficient < 0. ? -balance : balance;
+          });
   return forces;
 }
 

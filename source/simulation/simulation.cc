@@ -468,8 +468,9 @@ typename Simulation<dim>::Measures Simulation<dim>::measure() const
   if (step_history.n_rows() > 0)
   {
     const Vector<double> net_force = net_internal_force();
-    measures.contact_force   = contact->recovered_contact_force(mass, acceleration, net_force);
-    const auto side_forces   = contact->recovered_side_forces(mass, acceleration, net_force);
+    measures.contact_force = contact->recovered_contact_force(mass, acceleration, net_force);
+    const auto side_forces =
+        contact->recovered_side_forces(mass, acceleration, net_force, model->impact_direction());
     measures.force_imbalance = side_forces.on_a - side_forces.on_b;
   }
   measures.momenta.assign(model->n_bodies(), 0.);

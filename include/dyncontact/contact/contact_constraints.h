@@ -122,12 +122,12 @@ public:
                                  const Vector<double>& net_internal_force) const;
 
   /**
-   * The interface force of the active pairs between bodies (wall pairs left out) recovered as in
-   * recovered_contact_force() on each side: `on_a` from the slave nodes of body A (compression
-   * positive), `on_b` from the master nodes of body B, each once (the force A exerts on B along
-   * n). Equal up to round-off, also
-   * after the modified scheme's correction, whose normal rate changes on the two sides of a pair
-   * are equal and opposite; their difference measures the force balance.
+   * The interface force of the active pairs between bodies (wall pairs left out) recovered from
+   * the nodes' balances (M a + Q - W) along `direction` (a unit vector, e.g. the impact
+   * direction) on each side: `on_a` from the slave nodes of body A (compression positive),
+   * `on_b` from the master nodes of body B (the force A exerts on B), each node once however
+   * many pairs hold it. Equal up to round-off, also after the modified scheme's correction, which
+   * conserves momentum; their difference measures the force balance.
    */
   struct SideForces
   {
@@ -136,7 +136,8 @@ public:
   };
   SideForces recovered_side_forces(const Vector<double>& lumped_mass,
                                    const Vector<double>& acceleration,
-                                   const Vector<double>& net_internal_force) const;
+                                   const Vector<double>& net_internal_force,
+                                   const Tensor<1, dim>& direction) const;
 
   /** The multiplier of candidate `pair` if it is active, else zero. */
   double active_multiplier(unsigned int pair) const
