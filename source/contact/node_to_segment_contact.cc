@@ -23,13 +23,6 @@ QuadraticFace<dim> current_face(const ContactSurface<dim>& surface,
   return curve;
 }
 
-/** a x b of two vectors of the plane (its out-of-plane component). */
-template <int dim>
-double cross(const Tensor<1, dim>& a, const Tensor<1, dim>& b)
-{
-  return a[0] * b[1] - a[1] * b[0];
-}
-
 /**
  * The point of `face` on the ray from `x_s` along the averaged normal: xi with
  * (x(xi) - x_s) x nbar(xi) = 0, nbar(xi) = n_s - sum_i N_i(xi) n_i (the slave node's normal and
@@ -45,8 +38,8 @@ std::optional<double> normal_ray_point(const QuadraticFace<dim>& face,
 {
   for (unsigned int iteration = 0; iteration < 20; ++iteration)
   {
-    const auto N = QuadraticFace<dim>::shape_values(xi);
-    const std::array<double, 3> dN{{4. * xi - 3., 4. * xi - 1., 4. - 8. * xi}};
+    const auto N        = QuadraticFace<dim>::shape_values(xi);
+    const auto dN       = QuadraticFace<dim>::shape_derivatives(xi);
     Tensor<1, dim> nbar = n_s, dnbar;
     for (unsigned int i = 0; i < 3; ++i)
     {
@@ -54,10 +47,11 @@ std::optional<double> normal_ray_point(const QuadraticFace<dim>& face,
       dnbar -= dN[i] * normals[i];
     }
     const Tensor<1, dim> offset = face.point(xi) - x_s;
-    const double slope          = cross(face.tangent(xi), nbar) + cross(offset, dnbar);
+    const double slope =
+        face.tangent(xi) * cross_product_2d(nbar) + offset * cross_product_2d(dnbar);
     if (slope == 0.)
       return std::nullopt;
-    const double step = cross(offset, nbar) / slope;
+    const double step = (offset * cross_product_2d(nbar)) / slope;
     xi -= step;
     if (std::abs(step) <= 1e-14)
       return xi >= -1e-12 && xi <= 1. + 1e-12 ? std::optional<double>(std::clamp(xi, 0., 1.))

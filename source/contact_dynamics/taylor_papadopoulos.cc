@@ -16,6 +16,18 @@ struct Incidence
   double coefficient;
 };
 
+/** A node of an active pair with all its appearances. */
+template <int dim>
+struct NodeIncidence
+{
+  const Node<dim>* node;
+  std::vector<Incidence> appearances;
+};
+
+/** The nodes of the active pairs, keyed by their first DoF. */
+template <int dim>
+using IncidenceMap = std::map<types::global_dof_index, NodeIncidence<dim>>;
+
 /**
  * Solves (B M^-1 B^T) x = rhs for both right-hand sides, B the active pairs' rows
  * B_kj = c_kj n_k^T over the nodes j (slave -1, master w_i) and M the lumped nodal masses.
@@ -23,15 +35,15 @@ struct Incidence
 template <int dim>
 std::pair<Eigen::VectorXd, Eigen::VectorXd>
 solve_rate_multipliers(const std::vector<const ContactPair<dim>*>& active,
-                       const std::map<types::global_dof_index, std::vector<Incidence>>& incidence,
+                       const IncidenceMap<dim>& incidence,
                        const Vector<double>& lumped_mass,
                        const Eigen::VectorXd& rhs_a,
                        const Eigen::VectorXd& rhs_v)
 {
   std::vector<Eigen::Triplet<double>> entries;
-  for (const auto& [dof, appearances] : incidence)
-    for (const Incidence& k : appearances)
-      for (const Incidence& l : appearances)
+  for (const auto& [dof, node] : incidence)
+    for (const Incidence& k : node.appearances)
+      for (const Incidence& l : node.appearances)
         entries.emplace_back(k.row,
                              l.row,
                              k.coefficient * l.coefficient *
@@ -56,9 +68,8 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
   const Vector<double>& a_old = step.old_acceleration;
   std::vector<const ContactPair<dim>*> active;
   std::vector<double> predicted_position_jump, predicted_velocity_jump;
-  // Every node of an active pair (keyed by its first DoF) with its pairs' rows and coefficients.
-  std::map<types::global_dof_index, std::vector<Incidence>> incidence;
-  std::map<types::global_dof_index, const Node<dim>*> node_of;
+  // Every node of an active pair with its pairs' rows and coefficients.
+  IncidenceMap<dim> incidence;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
   {
     if (!contact.is_active(k))
@@ -79,8 +90,9 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
     pair.for_each_node(
         [&](const Node<dim>& node, const double coefficient)
         {
-          incidence[node.dofs[0]].push_back({row, coefficient});
-          node_of[node.dofs[0]] = &node;
+          NodeIncidence<dim>& entry = incidence[node.dofs[0]];
+          entry.node                = &node;
+          entry.appearances.push_back({row, coefficient});
         });
   }
   if (active.empty())
@@ -97,11 +109,11 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
 
   // Recovery of each node's rates: the increment over the predictor shifted by M^-1 B^T lambda_a
   // gives a_{n+1}, the velocity update from it shifted by M^-1 B^T lambda_v gives v_{n+1}.
-  for (const auto& [first_dof, appearances] : incidence)
+  for (const auto& [first_dof, entry] : incidence)
   {
-    const Node<dim>& node = *node_of.at(first_dof);
+    const Node<dim>& node = *entry.node;
     Tensor<1, dim> shift_a, shift_v;
-    for (const Incidence& k : appearances)
+    for (const Incidence& k : entry.appearances)
     {
       shift_a += k.coefficient * lambda_a[k.row] * active[k.row]->normal;
       shift_v += k.coefficient * lambda_v[k.row] * active[k.row]->normal;

@@ -169,16 +169,11 @@ TEST(FiniteSphereImpact, ImpulseIsTwiceReducedMassTimesSpeed)
     const double expected    = 2.0 * hertz.effective_mass() * hertz.relative_approach_speed();
     EXPECT_NEAR(impact.impulse(), expected, 1e-14 * expected);
 
-    const double t0       = hertz.first_touch_time();
-    const double t_c      = impact.contact_duration();
-    const auto half_force = [&](const bool from_start, const double sigma)
-    {
-      const double offset = 0.5 * t_c * sigma * sigma;
-      return impact.contact_force(from_start ? t0 + offset : t0 + t_c - offset) * t_c * sigma;
-    };
-    const double integral =
-        simpson(1.0, 1000, [&](const double s) { return half_force(true, s); }) +
-        simpson(1.0, 1000, [&](const double s) { return half_force(false, s); });
+    const double t0  = hertz.first_touch_time();
+    const double t_c = impact.contact_duration();
+    const auto halves =
+        half_impulses([&](const double t) { return impact.contact_force(t); }, t0, t_c, 1000);
+    const double integral = halves.first + halves.second;
     EXPECT_NEAR(integral, expected, 1e-9 * expected);
   }
 }

@@ -36,6 +36,7 @@ HertzImpact identical_impact(const ElasticSphere& sphere, const double speed)
 }
 
 using dyncontact::testing::OdeState;
+using dyncontact::testing::half_impulses;
 using dyncontact::testing::simpson;
 
 /**
@@ -230,15 +231,8 @@ TEST(HertzReference, HistoryReproducesPeakImpulseAndEnergy)
   const double t0         = hertz.first_touch_time();
   const double t_c        = hertz.contact_duration();
 
-  const auto force_from_end = [&](const bool from_start, const double sigma)
-  {
-    const double offset = 0.5 * t_c * sigma * sigma;
-    return hertz.contact_force(from_start ? t0 + offset : t0 + t_c - offset) * t_c * sigma;
-  };
-  const double first_half =
-      simpson(1.0, 4000, [&](const double s) { return force_from_end(true, s); });
-  const double second_half =
-      simpson(1.0, 4000, [&](const double s) { return force_from_end(false, s); });
+  const auto [first_half, second_half] =
+      half_impulses([&](const double t) { return hertz.contact_force(t); }, t0, t_c, 4000);
   EXPECT_NEAR(first_half + second_half, hertz.impulse(), 1e-10 * hertz.impulse());
   EXPECT_NEAR(first_half, second_half, 1e-10 * hertz.impulse());
 

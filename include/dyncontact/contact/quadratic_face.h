@@ -33,13 +33,19 @@ struct QuadraticFace
     return {{(1. - xi) * (1. - 2. * xi), xi * (2. * xi - 1.), 4. * xi * (1. - xi)}};
   }
 
+  /** dN_i/dxi, i = 0, 1, 2. */
+  static std::array<double, 3> shape_derivatives(const double xi)
+  {
+    return {{4. * xi - 3., 4. * xi - 1., 4. - 8. * xi}};
+  }
+
   /** x(xi). */
   Point<dim> point(const double xi) const { return combination(shape_values(xi)); }
 
   /** The tangent x'(xi) (not normalized; length per unit xi). */
   Tensor<1, dim> tangent(const double xi) const
   {
-    return combination({{4. * xi - 3., 4. * xi - 1., 4. - 8. * xi}}) - Point<dim>();
+    return combination(shape_derivatives(xi)) - Point<dim>();
   }
 
   /** A closest point of the face to a point: its parameter, position and distance. */
