@@ -232,6 +232,16 @@ double ContactConstraints<dim>::max_penetration(const Vector<double>& displaceme
 }
 
 template <int dim>
+double ContactConstraints<dim>::max_active_normal_jump(const Vector<double>& field) const
+{
+  double jump = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      jump = std::max(jump, std::abs(pairs[k].normal_jump(field)));
+  return jump;
+}
+
+template <int dim>
 double ContactConstraints<dim>::contact_radius(const Vector<double>& displacement) const
 {
   double radius = 0.;

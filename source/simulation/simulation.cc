@@ -54,6 +54,8 @@ std::vector<std::string> Simulation<dim>::history_columns() const
                                       "algorithmic_energy",
                                       "max_penetration",
                                       "force_imbalance",
+                                      "velocity_jump",
+                                      "acceleration_jump",
                                       "time_step",
                                       "step_cuts"};
   if (dim > 1)
@@ -299,7 +301,6 @@ void Simulation<dim>::restore(const State& state)
   impulses      = state.impulses;
   external_work = state.external_work;
   contact->restore(state.contact);
-  contact->update_geometry(displacement);
 }
 
 template <int dim>
@@ -363,6 +364,9 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   const Vector<double>& old_displacement = before.displacement;
   const Vector<double>& old_velocity     = before.velocity;
   const Vector<double>& old_acceleration = before.acceleration;
+  // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
+  // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
+  contact->update_geometry(old_displacement);
   Vector<double> predictor, increment(dof_handler.n_dofs());
   integrator.predict(old_displacement, old_velocity, old_acceleration, predictor);
   Vector<double> last_configuration = old_displacement; // as an increment over the predictor
@@ -374,7 +378,6 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   balance_body_momenta(increment);
   displacement = predictor;
   displacement += increment;
-  contact->update_geometry(displacement);
   integrator.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
   contact_dynamics->correct_rates(
       integrator.rate_map(),
@@ -471,7 +474,9 @@ typename Simulation<dim>::Measures Simulation<dim>::measure() const
     measures.contact_force = contact->recovered_contact_force(mass, acceleration, net_force);
     const auto side_forces =
         contact->recovered_side_forces(mass, acceleration, net_force, model->impact_direction());
-    measures.force_imbalance = side_forces.on_a - side_forces.on_b;
+    measures.force_imbalance   = side_forces.on_a - side_forces.on_b;
+    measures.velocity_jump     = contact->max_active_normal_jump(velocity);
+    measures.acceleration_jump = contact->max_active_normal_jump(acceleration);
   }
   measures.momenta.assign(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
@@ -517,6 +522,8 @@ void Simulation<dim>::record_step(const Measures& measures,
                              measures.algorithmic_energy,
                              contact->max_penetration(displacement),
                              measures.force_imbalance,
+                             measures.velocity_jump,
+                             measures.acceleration_jump,
                              step_history.n_rows() == 0 ? 0. : integrator.time_step(),
                              static_cast<double>(cuts)};
   // Contact pressures (surface contact only): one solve per step, skipped without contact.
@@ -625,7 +632,6 @@ void Simulation<dim>::serialize_state(Archive& archive)
   if (Archive::is_loading::value)
   {
     contact->restore(contact_state);
-    contact->update_geometry(displacement);
     solver->set_tangent_scale(tangent_scale);
   }
 }

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace dyncontact
 {
@@ -81,10 +80,7 @@ DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double
 {
   const types::global_dof_index n_dofs = inertia_force.size();
   const unsigned int n_pairs           = constraint_residual.size();
-  // Round-off of a force evaluated from displacements of size |u|, relative: a thousand units of
-  // double precision, far below any tolerance a user may set (>= 1e-16 relative to the forces).
-  constexpr double roundoff_factor = 1e3 * std::numeric_limits<double>::epsilon();
-  double force_residual_squared    = 0.;
+  double force_residual_squared        = 0.;
   for (types::global_dof_index i = 0; i < n_dofs; ++i)
   {
     residual_values[i] = is_fixed[i] ? 0.

@@ -6,12 +6,18 @@ Passes (exit 0) when both have the same columns and rows and, for every column e
 newton_iterations, max |a - b| <= TOLERANCE * max |a| over that column; prints the worst column.
 Columns that are round-off or tolerance-level by nature are scaled by the quantity they measure
 instead of by themselves (SCALE_COLUMN): the force imbalance by the contact force, the
-penetration by the displacement of the contact pole.
+penetration by the displacement of the contact pole, the normal velocity and acceleration jumps
+by the pole's velocity and acceleration.
 """
 import csv
 import sys
 
-SCALE_COLUMN = {"force_imbalance": "contact_force", "max_penetration": "u_tip_1"}
+SCALE_COLUMN = {
+    "force_imbalance": "contact_force",
+    "max_penetration": "u_tip_1",
+    "velocity_jump": "v_tip_1",
+    "acceleration_jump": "a_tip_1",
+}
 
 
 def read(path):

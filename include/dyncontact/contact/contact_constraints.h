@@ -30,8 +30,8 @@ namespace dyncontact
  *
  * Normals are fixed unless the pairs come from a ContactGeometry (NodeToNodeContact): then
  * update_geometry() moves them (normals and, for node-to-segment pairs, master points) to a
- * configuration; the time loop calls it at every converged (or restored) configuration,
- * and a step's Newton solve keeps those pairs (see ContactGeometry).
+ * configuration; the time loop calls it at the start of every step with u_n, and the step's
+ * Newton solve, rate correction and measures keep those pairs (see ContactGeometry).
  *
  * It does not choose time steps, know the integrator, assemble elasticity or solve linear systems.
  */
@@ -150,6 +150,13 @@ public:
 
   /** The largest penetration max(0, -g) over all candidate pairs at `displacement`. */
   double max_penetration(const Vector<double>& displacement) const;
+
+  /**
+   * The largest |[[f]]| = |n . (f_B - f_A)| over the active pairs of a nodal field (velocity:
+   * length/time, acceleration: length/time^2); zero if none is active. The paper's modified
+   * Newmark (Taylor & Papadopoulos 1993, eqs. 22-23) makes it zero for velocity and acceleration.
+   */
+  double max_active_normal_jump(const Vector<double>& field) const;
 
   /**
    * The largest distance of the current position of node A from the axis of the last coordinate

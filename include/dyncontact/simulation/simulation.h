@@ -109,7 +109,7 @@ private:
   struct Measures
   {
     double kinetic_energy, strain_energy, acceleration_energy, algorithmic_energy, contact_force,
-        force_imbalance;
+        force_imbalance, velocity_jump, acceleration_jump;
     std::vector<double> momenta;
   };
   Measures measure() const;

@@ -7,6 +7,7 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <limits>
 #include <vector>
 
 namespace dyncontact
@@ -35,6 +36,13 @@ template <int dim>
 class DynamicResidual
 {
 public:
+  /**
+   * Relative round-off of forces and gaps evaluated in double precision from displacements of
+   * size |u|: a thousand units of double precision, far below any tolerance a user may set
+   * (>= 1e-16 relative to the forces).
+   */
+  static constexpr double roundoff_factor = 1e3 * std::numeric_limits<double>::epsilon();
+
   /** The data of one time step's equation, fixed during its Newton iteration. */
   struct Step
   {

@@ -1,0 +1,123 @@
+// Acceptance tests of the paper's modified Newmark on non-matching meshes (node-to-segment pairs):
+// the identical spheres of section 6.4 at rho = 0.001, body 2 meshed with more divisions than
+// body 1 (meshes/two_spheres_nonmatching.geo), so that no slave node faces a master node.
+#include <dyncontact/reference/impact_measures.h>
+
+#include <algorithm>
+#include <cmath>
+#include <gtest/gtest.h>
+#include <string>
+#include <vector>
+
+#include "case_run.h"
+
+namespace dyncontact::testing
+{
+namespace
+{
+/** The coarse non-matching pair: body 1 as the coarse matching mesh, body 2 four more divisions. */
+std::vector<std::string> non_matching(const std::string& dynamics)
+{
+  return {"Mesh/file=" + source_path("meshes/two_spheres_nonmatching.geo"),
+          "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3",
+          "Contact/discretization=node-to-segment",
+          "Contact/dynamics=" + dynamics};
+}
+
+/** The modified-scheme run at the default Newton tolerance, shared by the tests. */
+const MeshRun& modified_run()
+{
+  static const MeshRun run =
+      run_mesh_case("prm/spheres_rho0.001.prm", non_matching("taylor-papadopoulos"));
+  return run;
+}
+
+double peak_force(const History& history)
+{
+  return measure_impact(history.column("time"), history.column("contact_force")).peak_force;
+}
+
+/** The largest |value| of a history column over the rows with active pairs. */
+double largest_in_contact(const History& history, const std::string& column)
+{
+  double largest = 0.;
+  for (unsigned int row = 0; row < history.n_rows(); ++row)
+    if (history.value(row, "active_constraints") > 0.)
+      largest = std::max(largest, std::abs(history.value(row, column)));
+  return largest;
+}
+} // namespace
+
+// Acceptance B of the non-matching issue: after the modified correction every active slave node
+// moves with its master point along the normal (velocity and acceleration), total momentum is
+// constant, the contact forces on the two bodies balance and no pair penetrates; the classical
+// scheme keeps the paper's jumps (eqs. 17-18), so the assertions can fail.
+TEST(NonMatchingImpact, RateConstraintsHoldMomentumAndForcesBalanceAndPairsDoNotPenetrate)
+{
+  const MeshRun& modified = modified_run();
+  const MeshRun classical = run_mesh_case("prm/spheres_rho0.001.prm", non_matching("none"));
+  const History& history  = modified.history();
+
+  const double impact_speed = 1.; // each sphere's initial speed towards the other
+  const double dt           = modified.parameters.time.time_step;
+  const double peak         = peak_force(history);
+  // The meshes of the two bodies differ, so do their masses: momentum is measured from its start.
+  const auto total_momentum = [&](const unsigned int row)
+  { return history.value(row, "momentum_1") + history.value(row, "momentum_2"); };
+  const double initial_momentum = std::abs(history.value(0, "momentum_1"));
+  double momentum_drift = 0., penetration = 0.;
+  for (unsigned int row = 0; row < history.n_rows(); ++row)
+  {
+    momentum_drift = std::max(momentum_drift, std::abs(total_momentum(row) - total_momentum(0)));
+    penetration    = std::max(penetration, history.value(row, "max_penetration"));
+  }
+  const double velocity_jump     = largest_in_contact(history, "velocity_jump");
+  const double acceleration_jump = largest_in_contact(history, "acceleration_jump");
+  const double imbalance         = largest_in_contact(history, "force_imbalance");
+  const double classical_jump    = largest_in_contact(classical.history(), "velocity_jump");
+  std::cout << "modified: velocity jump " << velocity_jump << ", acceleration jump "
+            << acceleration_jump << ", momentum drift " << momentum_drift / initial_momentum
+            << " of m v, force imbalance " << imbalance / peak << " of the peak " << peak
+            << ", penetration " << penetration << "; classical velocity jump " << classical_jump
+            << "\n";
+
+  // Jumps: the joint correction of all active pairs solves S lambda = r exactly, so what is left
+  // is the round-off of sums of nodal velocities of size 1 (measured 1.3e-12) and accelerations of
+  // size 1e5 (measured 1.1e-9, i.e. 3e-12 of v / dt = 400, the acceleration scale of the step).
+  EXPECT_LT(velocity_jump, 1e-10 * impact_speed);
+  EXPECT_LT(acceleration_jump, 1e-10 * impact_speed / dt);
+  // Momentum and balance: the constraint rows of a slave node and its master point's nodes have
+  // weights summing to zero along the normal, and Newton takes an update as long as it still
+  // reduces the residual fast, so the residual left at the contact nodes is round-off (measured:
+  // drift 2.4e-12 of m v, imbalance 1.4e-11 of the peak).
+  EXPECT_LT(momentum_drift, 1e-10 * initial_momentum);
+  EXPECT_LT(imbalance, 1e-10 * peak);
+  // Penetration: the active constraints hold to the gap tolerance of Newton, the residual
+  // tolerance times the smallest cell diameter, itself below 1 on this mesh (measured 4e-15).
+  EXPECT_LE(penetration, modified.parameters.newton.residual_tolerance * 1.);
+  // The classical scheme leaves the slave nodes' normal velocity jumping by up to twice the
+  // impact speed (eq. 18 with beta = 1/4: the contact nodes reverse their velocity; measured 2).
+  EXPECT_GT(classical_jump, 0.5 * impact_speed);
+  EXPECT_EQ(history.value(history.n_rows() - 1, "active_constraints"), 0.);
+}
+} // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+// Newton/residual tolerance = 1e-16, the tightest the input allows, asked for gaps of 1e-16 times
+// the smallest cell (3e-17) while the gaps of positions of size 8 carry round-off of 1e-15: every
+// step was cut to the smallest size and the run stopped (exit 3). The gap tolerance now has the
+// round-off floor of the forces (1e3 eps of the length scale): the run completes and agrees with
+// the default tolerance's to the latter's convergence (1e-10 relative force residual).
+TEST(NonMatchingImpact, TightestNewtonToleranceCompletesWithTheSameAnswer)
+{
+  auto overrides = non_matching("taylor-papadopoulos");
+  overrides.push_back("Newton/residual tolerance=1e-16");
+  const MeshRun tight       = run_mesh_case("prm/spheres_rho0.001.prm", overrides);
+  const double default_peak = peak_force(modified_run().history());
+  const double tight_peak   = peak_force(tight.history());
+  std::cout << "peak at tolerance 1e-16: " << tight_peak << ", at 1e-10: " << default_peak << "\n";
+  EXPECT_EQ(tight.history().n_rows(), modified_run().history().n_rows());
+  EXPECT_NEAR(tight_peak, default_peak, 1e-9 * default_peak);
+}
+} // namespace dyncontact::testing
