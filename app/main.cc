@@ -117,7 +117,8 @@ void run(const dyncontact::CommandLine& command_line)
     simulate<1>(parameters, std::make_unique<BarModel>(parameters.geometry), command_line);
   else
     simulate<2>(parameters,
-                std::make_unique<AxisymmetricMeshModel>(parameters.mesh, parameters.bodies),
+                std::make_unique<AxisymmetricMeshModel>(
+                    parameters.mesh, parameters.bodies, parameters.contact.pairs),
                 command_line);
 }
 } // namespace

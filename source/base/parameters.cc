@@ -212,6 +212,7 @@ struct ProblemSize
   GeometryKind geometry;
   unsigned int n_bars;
   unsigned int n_bodies;
+  unsigned int n_pairs;
 };
 
 /**
@@ -222,7 +223,7 @@ void declare_all(ParameterHandler& prm, const std::optional<ProblemSize>& size)
 {
   ProblemParameters::declare_parameters(prm);
   TimeIntegrationParameters::declare_parameters(prm);
-  ContactParameters::declare_parameters(prm);
+  ContactParameters::declare_parameters(prm, size ? size->n_pairs : 1);
   NewtonParameters::declare_parameters(prm);
   GuardParameters::declare_parameters(prm);
   if (!size || size->geometry == GeometryKind::bars)
@@ -493,9 +494,105 @@ unsigned int TimeIntegrationParameters::n_steps() const
   return std::max(1u, static_cast<unsigned int>(std::ceil(end_time / time_step - 1e-9)));
 }
 
-void ContactParameters::declare_parameters(ParameterHandler& prm)
+void ContactPairParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("slave boundary",
+                    "0",
+                    Patterns::Integer(0),
+                    "The slave surface of this pair: a boundary id, i.e. the tag of a gmsh "
+                    "physical curve of the mesh (>= 2; 1 is the symmetry axis). Its nodes carry "
+                    "the pair's multipliers.");
+  prm.declare_entry("master boundary",
+                    "0",
+                    Patterns::Integer(0),
+                    "The master surface: a boundary id (>= 2) of another body, or 0 for the rigid "
+                    "plane below. The slave nodes are projected onto it (node-to-segment) or "
+                    "paired with its facing nodes (node-to-node).");
+  prm.declare_entry("rigid plane",
+                    "",
+                    Patterns::Anything(),
+                    "With master boundary = 0: a fixed rigid plane (a line in the r-z plane) as "
+                    "'r, z; n_r, n_z': a point on it [length] and its normal pointing toward the "
+                    "body (normalized here), e.g. '0, 0; 0, 1' for the plane z = 0 below a body. "
+                    "Empty otherwise.");
+}
+
+namespace
+{
+/** The numbers of "a, b, ..." (comma-separated); empty if one is not a number. */
+std::vector<double> parse_numbers(const std::string& text)
+{
+  std::vector<double> numbers;
+  std::istringstream fields(text);
+  for (std::string field; std::getline(fields, field, ',');)
+  {
+    std::istringstream stream(field);
+    double value;
+    if (!(stream >> value) || !(stream >> std::ws).eof() || !std::isfinite(value))
+      return {};
+    numbers.push_back(value);
+  }
+  return numbers;
+}
+} // namespace
+
+void ContactPairParameters::parse_parameters(ParameterHandler& prm, const std::string& source)
+{
+  this->source           = source;
+  const auto slave       = prm.get_integer("slave boundary");
+  const auto master      = prm.get_integer("master boundary");
+  const std::string text = prm.get("rigid plane");
+  const bool has_plane   = text.find_first_not_of(" \t") != std::string::npos;
+  if (slave < 2)
+    throw InputError(source + "/slave boundary = " + std::to_string(slave) +
+                     " is not allowed: it must be a boundary id >= 2 (a gmsh physical curve "
+                     "tag; 1 is the symmetry axis).");
+  if (master == 1 || master == slave)
+    throw InputError(source + "/master boundary = " + std::to_string(master) +
+                     " is not allowed: it must be a boundary id >= 2 other than the slave "
+                     "boundary, or 0 for a rigid plane.");
+  if ((master != 0) == has_plane)
+    throw InputError(source +
+                     ": give either master boundary (>= 2) or rigid plane ('r, z; "
+                     "n_r, n_z' with master boundary = 0), not " +
+                     std::string(has_plane ? "both." : "neither."));
+  slave_boundary = slave;
+  if (master != 0)
+  {
+    master_boundary = master;
+    return;
+  }
+  const auto separator = text.find(';');
+  const std::vector<double> point =
+      parse_numbers(separator == std::string::npos ? text : text.substr(0, separator));
+  const std::vector<double> normal = separator == std::string::npos
+                                         ? std::vector<double>()
+                                         : parse_numbers(text.substr(separator + 1));
+  const double length              = normal.size() == 2 ? std::hypot(normal[0], normal[1]) : 0.;
+  if (point.size() != 2 || normal.size() != 2 || !(length > 0.))
+    throw InputError(source + "/rigid plane = '" + text +
+                     "' is not allowed: it must be 'r, z; n_r, n_z', a point and a nonzero "
+                     "normal.");
+  rigid_plane = std::make_pair(Point<2>(point[0], point[1]),
+                               Tensor<1, 2>({normal[0] / length, normal[1] / length}));
+}
+
+void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_pairs)
 {
   prm.enter_subsection("Contact");
+  prm.declare_entry("number of pairs",
+                    "0",
+                    Patterns::Integer(0, 100),
+                    "Mesh problems: how many contact pairs are declared, as subsections "
+                    "'Pair 1', 'Pair 2', ... 0: with two bodies, their surfaces of the sphere "
+                    "meshes (physical curves 2 and 3, body 1 the slave side); with one body, "
+                    "no contact; more bodies need declared pairs. Bars: 0.");
+  for (unsigned int k = 1; k <= n_pairs; ++k)
+  {
+    prm.enter_subsection("Pair " + std::to_string(k));
+    ContactPairParameters::declare_parameters(prm);
+    prm.leave_subsection();
+  }
   prm.declare_entry("dynamics",
                     contact_dynamics_names().name(default_contact_dynamics),
                     Patterns::Selection(contact_dynamics_names().selection()),
@@ -555,6 +652,14 @@ void ContactParameters::parse_parameters(ParameterHandler& prm)
     if (!(stream >> penalty_factor) || !(stream >> std::ws).eof() || !(penalty_factor > 0.))
       throw InputError("Contact/penalty factor = " + factor +
                        " is not allowed: it must be a number > 0 or auto.");
+  }
+  pairs.resize(prm.get_integer("number of pairs"));
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    const std::string name = "Pair " + std::to_string(k + 1);
+    prm.enter_subsection(name);
+    pairs[k].parse_parameters(prm, "Contact/" + name);
+    prm.leave_subsection();
   }
   prm.leave_subsection();
 }
@@ -847,6 +952,9 @@ ParameterReader::ParameterReader(const std::string& filename,
     size_prm.enter_subsection("Bodies");
     size_prm.declare_entry("number of bodies", "1", Patterns::Integer(1, 100));
     size_prm.leave_subsection();
+    size_prm.enter_subsection("Contact");
+    size_prm.declare_entry("number of pairs", "0", Patterns::Integer(0, 100));
+    size_prm.leave_subsection();
     parse_file(size_prm, filename, true);
     for (const auto& text : overrides)
       apply_override(size_prm, text, true);
@@ -859,6 +967,12 @@ ParameterReader::ParameterReader(const std::string& filename,
     size_prm.enter_subsection("Bodies");
     size.n_bodies = size_prm.get_integer("number of bodies");
     size_prm.leave_subsection();
+    size_prm.enter_subsection("Contact");
+    size.n_pairs = size_prm.get_integer("number of pairs");
+    size_prm.leave_subsection();
+    if (size.geometry == GeometryKind::bars && size.n_pairs > 0)
+      throw InputError("Contact/number of pairs = " + std::to_string(size.n_pairs) +
+                       " is for mesh problems; bars meet at their ends (use 0).");
   }
 
   declare_all(prm, size);

@@ -1,5 +1,7 @@
 #include <dyncontact/contact/contact_factory.h>
+#include <dyncontact/contact/contact_geometry_set.h>
 #include <dyncontact/contact/node_to_segment_contact.h>
+#include <dyncontact/contact/rigid_plane_contact.h>
 
 namespace dyncontact
 {
@@ -14,6 +16,78 @@ const NameTable<ContactDiscretization>& contact_discretization_names()
 namespace
 {
 template <int dim>
+std::unique_ptr<ContactGeometry<dim>>
+surface_contact(const typename ContactDescription<dim>::SurfacePair& surfaces,
+                const DoFHandler<dim>& dof_handler,
+                const Kinematics<dim>& kinematics,
+                const NodeIndex<dim>& nodes,
+                const ContactParameters& parameters)
+{
+  ContactSurface<dim> surface_a(dof_handler, kinematics, nodes, surfaces.surface_a);
+  ContactSurface<dim> surface_b(dof_handler, kinematics, nodes, surfaces.surface_b);
+  const double penalty_per_area =
+      parameters.penalty_factor * surfaces.stiffness_modulus / surfaces.stiffness_length;
+  switch (parameters.discretization)
+  {
+  case ContactDiscretization::node_to_node:
+    return std::make_unique<NodeToNodeContact<dim>>(std::move(surface_a),
+                                                    std::move(surface_b),
+                                                    penalty_per_area,
+                                                    surfaces.matching_tolerance,
+                                                    surfaces.touching_tolerance);
+  case ContactDiscretization::node_to_segment:
+    if constexpr (dim != 2)
+      throw InputError("Contact/discretization = node-to-segment is implemented for 2D "
+                       "(axisymmetric) meshes only.");
+    else
+      return std::make_unique<NodeToSegmentContact<dim>>(std::move(surface_a),
+                                                         std::move(surface_b),
+                                                         penalty_per_area,
+                                                         surfaces.search_radius,
+                                                         surfaces.touching_tolerance);
+  }
+  AssertThrow(false, ExcInternalError()); // every ContactDiscretization is a case above
+  return nullptr;
+}
+
+/** The geometry of every described surface and plane pair: one, or a ContactGeometrySet. */
+template <int dim>
+std::unique_ptr<ContactGeometry<dim>> surface_geometry(const ContactDescription<dim>& description,
+                                                       const DoFHandler<dim>& dof_handler,
+                                                       const Kinematics<dim>& kinematics,
+                                                       const NodeIndex<dim>& nodes,
+                                                       const ContactParameters& parameters)
+{
+  std::vector<std::unique_ptr<ContactGeometry<dim>>> members;
+  for (const auto& surfaces : description.surface_pairs)
+    try
+    {
+      members.push_back(surface_contact(surfaces, dof_handler, kinematics, nodes, parameters));
+    }
+    catch (const InputError& error)
+    {
+      throw InputError(surfaces.source + ": " + error.what());
+    }
+  for (const auto& plane : description.plane_pairs)
+    try
+    {
+      members.push_back(std::make_unique<RigidPlaneContact<dim>>(
+          ContactSurface<dim>(dof_handler, kinematics, nodes, plane.surface),
+          plane.point,
+          plane.normal,
+          parameters.penalty_factor * plane.stiffness_modulus / plane.stiffness_length,
+          plane.touching_tolerance));
+    }
+    catch (const InputError& error)
+    {
+      throw InputError(plane.source + ": " + error.what());
+    }
+  if (members.size() == 1)
+    return std::move(members.front());
+  return std::make_unique<ContactGeometrySet<dim>>(std::move(members));
+}
+
+template <int dim>
 Contact<dim> build_contact(const ContactDescription<dim>& description,
                            const DoFHandler<dim>& dof_handler,
                            const Kinematics<dim>& kinematics,
@@ -21,43 +95,10 @@ Contact<dim> build_contact(const ContactDescription<dim>& description,
                            const ContactParameters& parameters)
 {
   Contact<dim> contact;
-  if (description.surface_pair)
+  if (!description.surface_pairs.empty() || !description.plane_pairs.empty())
   {
     Assert(description.fixed_pairs.empty(), ExcMessage("surface contact or fixed pairs, not both"));
-    const auto& surfaces = *description.surface_pair;
-    try
-    {
-      ContactSurface<dim> surface_a(dof_handler, kinematics, nodes, surfaces.surface_a);
-      ContactSurface<dim> surface_b(dof_handler, kinematics, nodes, surfaces.surface_b);
-      const double penalty_per_area =
-          parameters.penalty_factor * surfaces.stiffness_modulus / surfaces.stiffness_length;
-      switch (parameters.discretization)
-      {
-      case ContactDiscretization::node_to_node:
-        contact.surfaces = std::make_unique<NodeToNodeContact<dim>>(std::move(surface_a),
-                                                                    std::move(surface_b),
-                                                                    penalty_per_area,
-                                                                    surfaces.matching_tolerance,
-                                                                    surfaces.touching_tolerance);
-        break;
-      case ContactDiscretization::node_to_segment:
-        if constexpr (dim != 2)
-          throw InputError("Contact/discretization = node-to-segment is implemented for 2D "
-                           "(axisymmetric) meshes only.");
-        else
-          contact.surfaces =
-              std::make_unique<NodeToSegmentContact<dim>>(std::move(surface_a),
-                                                          std::move(surface_b),
-                                                          penalty_per_area,
-                                                          surfaces.search_radius,
-                                                          surfaces.touching_tolerance);
-        break;
-      }
-    }
-    catch (const InputError& error)
-    {
-      throw InputError(surfaces.source + ": " + error.what());
-    }
+    contact.surfaces = surface_geometry(description, dof_handler, kinematics, nodes, parameters);
     contact.constraints =
         std::make_unique<ContactConstraints<dim>>(*contact.surfaces, parameters.formulation);
     return contact;

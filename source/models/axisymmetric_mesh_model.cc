@@ -12,8 +12,9 @@
 namespace dyncontact
 {
 AxisymmetricMeshModel::AxisymmetricMeshModel(const MeshParameters& mesh,
-                                             const BodiesParameters& bodies)
-    : mesh(mesh), bodies(bodies), n_cells(0), shortest_edge(0.)
+                                             const BodiesParameters& bodies,
+                                             const std::vector<ContactPairParameters>& pairs)
+    : mesh(mesh), bodies(bodies), declared_pairs(pairs), n_cells(0), shortest_edge(0.)
 {
 }
 
@@ -99,22 +100,43 @@ Tensor<1, 2> AxisymmetricMeshModel::initial_velocity(const types::material_id bo
 
 ContactDescription<2> AxisymmetricMeshModel::contact_description(const NodeIndex<2>&) const
 {
-  ContactDescription<2> description;
-  if (n_bodies() == 1)
-    return description;
-  if (n_bodies() > 2)
+  std::vector<ContactPairParameters> pairs = declared_pairs;
+  if (pairs.empty() && n_bodies() == 2)
+    pairs.push_back({SphereMeshIds::surface(0),
+                     SphereMeshIds::surface(1),
+                     std::nullopt,
+                     "Mesh/file = '" + mesh.file + "'"});
+  if (pairs.empty() && n_bodies() > 2)
     throw InputError("Bodies/number of bodies = " + std::to_string(n_bodies()) +
-                     ": contact is implemented between two bodies; use 1 or 2.");
-  // Facing nodes of the mirrored meshes coincide in r to round-off of the mesh generator.
-  description.surface_pair = {
-      SphereMeshIds::surface(0),
-      SphereMeshIds::surface(1),
-      std::max(bodies.bodies[0].youngs_modulus, bodies.bodies[1].youngs_modulus),
-      shortest_edge,
-      1e-6 * shortest_edge,
-      search_radius(),
-      touching_tolerance(),
-      "Mesh/file = '" + mesh.file + "'"};
+                     ": with more than two bodies the contact pairs must be declared "
+                     "(Contact/number of pairs and Contact/Pair k).");
+  double stiffest = 0.;
+  for (const BodyParameters& body : bodies.bodies)
+    stiffest = std::max(stiffest, body.youngs_modulus);
+  ContactDescription<2> description;
+  for (const ContactPairParameters& pair : pairs)
+  {
+    const std::string source =
+        declared_pairs.empty() ? pair.source : pair.source + " (Mesh/file = '" + mesh.file + "')";
+    if (pair.master_boundary)
+      // Facing nodes of mirrored meshes coincide in r to round-off of the mesh generator.
+      description.surface_pairs.push_back({pair.slave_boundary,
+                                           *pair.master_boundary,
+                                           stiffest,
+                                           shortest_edge,
+                                           1e-6 * shortest_edge,
+                                           search_radius(),
+                                           touching_tolerance(),
+                                           source});
+    else
+      description.plane_pairs.push_back({pair.slave_boundary,
+                                         pair.rigid_plane->first,
+                                         pair.rigid_plane->second,
+                                         stiffest,
+                                         shortest_edge,
+                                         touching_tolerance(),
+                                         source});
+  }
   return description;
 }
 

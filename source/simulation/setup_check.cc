@@ -32,7 +32,8 @@ void check_run_setup(const RunParameters& parameters)
   else
   {
     prepare<2>(parameters,
-               std::make_unique<AxisymmetricMeshModel>(parameters.mesh, parameters.bodies));
+               std::make_unique<AxisymmetricMeshModel>(
+                   parameters.mesh, parameters.bodies, parameters.contact.pairs));
   }
 }
 } // namespace dyncontact

@@ -93,10 +93,11 @@ MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string
 {
   MeshRun run;
   run.parameters = test_parameters(prm_file, overrides);
-  run.simulation = run_quietly<2>(
-      run.parameters,
-      std::make_unique<AxisymmetricMeshModel>(run.parameters.mesh, run.parameters.bodies),
-      &run.profiles);
+  run.simulation =
+      run_quietly<2>(run.parameters,
+                     std::make_unique<AxisymmetricMeshModel>(
+                         run.parameters.mesh, run.parameters.bodies, run.parameters.contact.pairs),
+                     &run.profiles);
   return run;
 }
 

@@ -77,7 +77,7 @@ struct TwoSpheres
         surface(1),
         1.,
         search_radius,
-        model.contact_description(*nodes).surface_pair->touching_tolerance);
+        model.contact_description(*nodes).surface_pairs.front().touching_tolerance);
   }
 
   /** A rigid translation of body 2 by `shift`. */

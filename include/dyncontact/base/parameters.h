@@ -8,9 +8,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -50,6 +52,27 @@ struct TimeIntegrationParameters
   void parse_parameters(ParameterHandler& prm);
 };
 
+/**
+ * One declared contact pair of a mesh problem, subsection `Contact/Pair k`: a slave boundary
+ * against a master boundary (both gmsh physical curve tags, i.e. boundary ids), or against a rigid
+ * plane.
+ */
+struct ContactPairParameters
+{
+  types::boundary_id slave_boundary;
+  /// empty: the slave boundary meets the rigid plane instead
+  std::optional<types::boundary_id> master_boundary;
+  /// the rigid plane: a point on it [length] and its unit normal pointing toward the body
+  std::optional<std::pair<Point<2>, Tensor<1, 2>>> rigid_plane;
+  /// what errors name: "Contact/Pair k"
+  std::string source;
+
+  static void declare_parameters(ParameterHandler& prm);
+  /** Throws InputError (naming `source`) for ids below 2, equal ids, or not exactly one of
+   * master boundary and rigid plane, or a malformed plane. */
+  void parse_parameters(ParameterHandler& prm, const std::string& source);
+};
+
 /** Contact enforcement. Subsection `Contact`. */
 struct ContactParameters
 {
@@ -64,8 +87,11 @@ struct ContactParameters
   bool automatic_penalty;
   /// the automatic factor where the bodies' highest mode is not resolved by the time step
   static constexpr double quasi_static_penalty_factor = 100.;
+  /// Contact/Pair 1, 2, ... (mesh problems); empty: the model's default pairing
+  std::vector<ContactPairParameters> pairs;
 
-  static void declare_parameters(ParameterHandler& prm);
+  /** Declares the subsections Pair 1 to Pair n_pairs too. */
+  static void declare_parameters(ParameterHandler& prm, unsigned int n_pairs);
   void parse_parameters(ParameterHandler& prm);
 };
 

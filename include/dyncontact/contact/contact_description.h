@@ -14,8 +14,9 @@ namespace dyncontact
 {
 /**
  * What a problem model says about its contact, without building anything: candidate pairs with
- * fixed normals (bars, a rigid wall) and/or a pair of matching contact surfaces by boundary id,
- * each with the elastic stiffness scale a penalty is sized from. create_contact() builds the
+ * fixed normals (bars, a rigid wall), or any number of pairs of contact surfaces by boundary id
+ * and of surfaces against rigid planes, each with the elastic stiffness scale a penalty is sized
+ * from. create_contact() builds the
  * geometry and the constraint set from it and applies Contact/formulation and Contact/penalty
  * factor; models never see those.
  */
@@ -52,7 +53,21 @@ struct ContactDescription
     std::string source;        ///< what errors name, e.g. "Mesh/file = 'two_spheres.geo'"
   };
 
+  /** A boundary against a rigid, fixed plane (RigidPlaneContact). */
+  struct PlanePair
+  {
+    types::boundary_id surface;
+    Point<dim> point;      ///< [length], on the plane
+    Tensor<1, dim> normal; ///< unit, pointing out of the plane toward the body
+    /// the penalty per unit contact area is factor x stiffness_modulus / stiffness_length
+    double stiffness_modulus;  ///< [force/area], the body's Young's modulus
+    double stiffness_length;   ///< [length], e.g. the shortest cell edge
+    double touching_tolerance; ///< [length], a gap above -this at t = 0 is touching, not overlap
+    std::string source;        ///< what errors name, e.g. "Contact/Pair 2"
+  };
+
   std::vector<FixedPair> fixed_pairs;
-  std::optional<SurfacePair> surface_pair;
+  std::vector<SurfacePair> surface_pairs;
+  std::vector<PlanePair> plane_pairs;
 };
 } // namespace dyncontact

@@ -59,19 +59,21 @@ public:
 
 /**
  * The InputError a contact geometry's constructor throws for a pair whose reference gap is below
- * -`touching_tolerance` [length] (the bodies overlap at t = 0): it names both bodies (1-based),
- * where the slave node is and how deep it lies inside the master body.
+ * -`touching_tolerance` [length] (the bodies overlap at t = 0): it names both bodies (1-based), or
+ * the rigid plane, where the slave node is and how deep it lies inside the other side.
  */
 template <int dim>
 InputError overlap_at_start(const ContactPair<dim>& pair, const double touching_tolerance)
 {
   std::ostringstream where;
   where << pair.slave.position;
-  const std::string body_a = std::to_string(pair.slave.body + 1);
-  const std::string body_b = std::to_string(pair.masters[0].node.body + 1);
-  return InputError("body " + body_a + " and body " + body_b + " overlap at t = 0: the node " +
-                    where.str() + " of body " + body_a + " lies " +
-                    format_number(-pair.reference_gap()) + " inside body " + body_b +
+  const std::string body_a = "body " + std::to_string(pair.slave.body + 1);
+  const std::string other  = pair.against_wall()
+                                 ? std::string("the rigid plane")
+                                 : "body " + std::to_string(pair.masters[0].node.body + 1);
+  return InputError(body_a + " and " + other + " overlap at t = 0: the node " + where.str() +
+                    " of " + body_a + " lies " + format_number(-pair.reference_gap()) +
+                    (pair.against_wall() ? " behind " : " inside ") + other +
                     " (bodies may touch, to " + format_number(touching_tolerance) +
                     ", but not overlap).");
 }

@@ -19,7 +19,11 @@ namespace dyncontact
 class AxisymmetricMeshModel : public ProblemModel<2>
 {
 public:
-  AxisymmetricMeshModel(const MeshParameters& mesh, const BodiesParameters& bodies);
+  /** `pairs`: the declared contact pairs (Contact/Pair k); empty: the default, see
+   * contact_description(). */
+  AxisymmetricMeshModel(const MeshParameters& mesh,
+                        const BodiesParameters& bodies,
+                        const std::vector<ContactPairParameters>& pairs = {});
 
   unsigned int element_degree() const override { return 2; }
   unsigned int n_bodies() const override { return bodies.bodies.size(); }
@@ -33,12 +37,15 @@ public:
   /** Body b's `Initial velocity` at X; throws InputError if it is not finite there. */
   Tensor<1, 2> initial_velocity(types::material_id body, const Point<2>& X) const override;
   /**
-   * With two bodies: contact between their sphere surfaces (boundary ids SphereMeshIds::surface(0),
-   * the slave side, and (1), the master side), discretized by Contact/discretization: node-to-node
-   * needs matching facing nodes (to 1e-6 h_min), node-to-segment searches within search_radius().
-   * They must not overlap (they may touch, to touching_tolerance(), and then start closed); the
-   * penalty stiffness scale per unit contact area is E / h_min (E of the stiffer body, h_min the
-   * shortest cell edge). With one body: no contact. More than two bodies are rejected (InputError).
+   * The declared pairs (Contact/Pair k): each a slave boundary against a master boundary or a
+   * rigid plane, discretized by Contact/discretization: node-to-node needs matching facing nodes
+   * (to 1e-6 h_min), node-to-segment searches within search_radius(). Without declared pairs:
+   * with two bodies, contact between their sphere surfaces (boundary ids
+   * SphereMeshIds::surface(0), the slave side, and (1), the master side); with one body, none;
+   * more bodies need declared pairs (InputError). Surfaces must not overlap (they may touch, to
+   * touching_tolerance(), and then start closed); the penalty stiffness scale per unit contact
+   * area is E / h_min (E of the stiffest body, h_min the shortest cell edge). Boundary ids the
+   * mesh does not have throw InputError when the contact is built (create_contact()).
    */
   ContactDescription<2> contact_description(const NodeIndex<2>& nodes) const override;
   std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
@@ -91,6 +98,7 @@ private:
 
   MeshParameters mesh;
   BodiesParameters bodies;
+  std::vector<ContactPairParameters> declared_pairs;
   std::vector<SphereGeometry> spheres;
   unsigned int n_cells;
   double shortest_edge;

@@ -1,0 +1,67 @@
+#include <dyncontact/contact/contact_geometry_set.h>
+
+#include <algorithm>
+#include <iterator>
+
+namespace dyncontact
+{
+template <int dim>
+ContactGeometrySet<dim>::ContactGeometrySet(
+    std::vector<std::unique_ptr<ContactGeometry<dim>>> members)
+    : members(std::move(members))
+{
+  Assert(!this->members.empty(), ExcMessage("a contact geometry set needs a member"));
+  for (const auto& member : this->members)
+  {
+    first_pair.push_back(all_pairs.size());
+    all_pairs.insert(all_pairs.end(), member->pairs().begin(), member->pairs().end());
+  }
+  first_pair.push_back(all_pairs.size());
+}
+
+template <int dim>
+void ContactGeometrySet<dim>::update_pairs(const Vector<double>& displacement,
+                                           std::vector<ContactPair<dim>>& pairs) const
+{
+  AssertDimension(pairs.size(), all_pairs.size());
+  for (unsigned int m = 0; m < members.size(); ++m)
+  {
+    std::vector<ContactPair<dim>> own(pairs.begin() + first_pair[m],
+                                      pairs.begin() + first_pair[m + 1]);
+    members[m]->update_pairs(displacement, own);
+    std::copy(own.begin(), own.end(), pairs.begin() + first_pair[m]);
+  }
+}
+
+template <int dim>
+std::vector<types::global_dof_index>
+ContactGeometrySet<dim>::coupled_dofs(const unsigned int k) const
+{
+  const unsigned int m =
+      std::distance(first_pair.begin(), std::upper_bound(first_pair.begin(), first_pair.end(), k)) -
+      1;
+  return members[m]->coupled_dofs(k - first_pair[m]);
+}
+
+template <int dim>
+std::vector<double>
+ContactGeometrySet<dim>::contact_pressures(const Vector<double>& displacement,
+                                           const std::vector<double>& multipliers) const
+{
+  AssertDimension(multipliers.size(), all_pairs.size());
+  std::vector<double> pressures;
+  for (unsigned int m = 0; m < members.size(); ++m)
+  {
+    const std::vector<double> own =
+        members[m]->contact_pressures(displacement,
+                                      std::vector<double>(multipliers.begin() + first_pair[m],
+                                                          multipliers.begin() + first_pair[m + 1]));
+    pressures.insert(pressures.end(), own.begin(), own.end());
+  }
+  return pressures;
+}
+
+template class ContactGeometrySet<1>;
+template class ContactGeometrySet<2>;
+template class ContactGeometrySet<3>;
+} // namespace dyncontact
