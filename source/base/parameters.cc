@@ -303,8 +303,10 @@ void MeshParameters::declare_parameters(ParameterHandler& prm)
                     Patterns::FileName(),
                     "gmsh mesh: a .geo file (meshed through the gmsh API) or a .msh file. A "
                     "relative path is relative to the directory of the parameter file. Physical "
-                    "surface b is body b, physical curve 1 the symmetry axis, physical curve b + 1 "
-                    "the surface of body b (see meshes/sphere.geo).",
+                    "surface b is body b, physical curve 1 the symmetry axis, every other physical "
+                    "curve a boundary of one body, a circle about the axis or a straight line; in "
+                    "the sphere meshes physical curve b + 1 is the surface of body b (see "
+                    "meshes/README.md).",
                     true);
   prm.declare_entry("geo parameters",
                     "",

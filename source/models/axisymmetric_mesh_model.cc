@@ -14,24 +14,41 @@ namespace dyncontact
 AxisymmetricMeshModel::AxisymmetricMeshModel(const MeshParameters& mesh,
                                              const BodiesParameters& bodies,
                                              const std::vector<ContactPairParameters>& pairs)
-    : mesh(mesh), bodies(bodies), declared_pairs(pairs), n_cells(0), shortest_edge(0.)
+    : mesh(mesh), bodies(bodies), declared_pairs(pairs), n_cells(0), shortest_edge(0.),
+      largest_coordinate(0.), closest_boundary_vertices(0.)
 {
 }
 
 void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation)
 {
-  spheres = read_gmsh_mesh(mesh.file, mesh.geo_parameters, triangulation);
+  geometry = read_gmsh_mesh(mesh.file, mesh.geo_parameters, triangulation);
   std::vector<unsigned int> cells_of_body(n_bodies(), 0);
-  shortest_edge = std::numeric_limits<double>::max();
+  std::vector<double> lowest_z(n_bodies(), std::numeric_limits<double>::max());
+  std::vector<double> highest_z(n_bodies(), std::numeric_limits<double>::lowest());
+  std::vector<std::vector<Point<2>>> boundary_vertices(n_bodies());
+  shortest_edge      = std::numeric_limits<double>::max();
+  largest_coordinate = 0.;
   for (const auto& cell : triangulation.active_cell_iterators())
   {
-    if (cell->material_id() >= n_bodies())
+    const types::material_id body = cell->material_id();
+    if (body >= n_bodies())
       throw InputError("Mesh/file = '" + mesh.file + "' has cells of body " +
-                       std::to_string(cell->material_id() + 1) +
+                       std::to_string(body + 1) +
                        " but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
-    ++cells_of_body[cell->material_id()];
+    ++cells_of_body[body];
     for (unsigned int line = 0; line < cell->n_lines(); ++line)
       shortest_edge = std::min(shortest_edge, cell->line(line)->diameter());
+    for (const unsigned int v : cell->vertex_indices())
+    {
+      const Point<2>& vertex = cell->vertex(v);
+      largest_coordinate = std::max({largest_coordinate, std::abs(vertex[0]), std::abs(vertex[1])});
+      lowest_z[body]     = std::min(lowest_z[body], vertex[1]);
+      highest_z[body]    = std::max(highest_z[body], vertex[1]);
+    }
+    for (const auto& face : cell->face_iterators())
+      if (face->at_boundary())
+        for (const unsigned int v : face->vertex_indices())
+          boundary_vertices[body].push_back(face->vertex(v));
   }
   for (unsigned int body = 0; body < n_bodies(); ++body)
     if (cells_of_body[body] == 0)
@@ -39,15 +56,21 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
                        std::to_string(body + 1) + " (physical surface " + std::to_string(body + 1) +
                        "), but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
   n_cells = triangulation.n_active_cells();
+  body_heights.clear();
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+    body_heights.push_back(highest_z[body] - lowest_z[body]);
+  closest_boundary_vertices = std::numeric_limits<double>::max();
+  if (n_bodies() == 2)
+    for (const Point<2>& vertex_0 : boundary_vertices[0])
+      for (const Point<2>& vertex_1 : boundary_vertices[1])
+        closest_boundary_vertices =
+            std::min(closest_boundary_vertices, vertex_0.distance(vertex_1));
 }
 
 double AxisymmetricMeshModel::touching_tolerance() const
 {
-  double largest_position = 0.;
-  for (const SphereGeometry& sphere : spheres)
-    largest_position = std::max(largest_position, std::abs(sphere.centre[1]) + sphere.radius);
   return std::max(1e-9 * shortest_edge,
-                  8. * std::numeric_limits<double>::epsilon() * largest_position);
+                  8. * std::numeric_limits<double>::epsilon() * largest_coordinate);
 }
 
 double AxisymmetricMeshModel::dilatational_wave_speed(const unsigned int body) const
@@ -145,10 +168,15 @@ double AxisymmetricMeshModel::search_radius() const
   // The initial gap between the two spheres plus a quarter of the smaller radius: a head-on
   // impact's contact radius stays far below R / 4 in the small-strain regime (paper spheres:
   // a / R = 0.2 at rho = 0.001), and a slave node within R / 4 of the axis lies within
-  // R / 4 + gap of the master surface.
-  const double distance = std::abs(spheres[1].centre[1] - spheres[0].centre[1]);
-  const double gap      = std::max(0., distance - spheres[0].radius - spheres[1].radius);
-  return gap + 0.25 * std::min(spheres[0].radius, spheres[1].radius);
+  // R / 4 + gap of the master surface. Other bodies: the gap measured between their boundary
+  // vertices (at least the true gap) plus a quarter of the smaller height (R / 2 for a sphere,
+  // more generous than the spheres' R / 4: a flat face has no curvature to bound the contact).
+  const std::optional<SphereGeometry> sphere_0 = geometry.sphere(0), sphere_1 = geometry.sphere(1);
+  if (!sphere_0 || !sphere_1)
+    return closest_boundary_vertices + 0.25 * std::min(body_heights[0], body_heights[1]);
+  const double distance = std::abs(sphere_1->centre[1] - sphere_0->centre[1]);
+  const double gap      = std::max(0., distance - sphere_0->radius - sphere_1->radius);
+  return gap + 0.25 * std::min(sphere_0->radius, sphere_1->radius);
 }
 
 std::vector<types::global_dof_index>
@@ -187,8 +215,10 @@ Tensor<1, 2> AxisymmetricMeshModel::impact_direction() const
 
 std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
 {
-  if (n_bodies() != 2 || spheres.size() != 2)
+  const std::optional<SphereGeometry> sphere_0 = geometry.sphere(0), sphere_1 = geometry.sphere(1);
+  if (n_bodies() != 2 || !sphere_0 || !sphere_1)
     return std::nullopt;
+  const SphereGeometry spheres[2] = {*sphere_0, *sphere_1};
   const BodyParameters &lower = bodies.bodies[0], &upper = bodies.bodies[1];
   const double distance = spheres[1].centre[1] - spheres[0].centre[1];
   const double approach_speed =
@@ -278,9 +308,8 @@ void AxisymmetricMeshModel::print_summary(std::ostream& out, const double time_s
     out << "  body " << body + 1 << ": " << parameters.material
         << ", E = " << parameters.youngs_modulus << ", nu = " << parameters.poissons_ratio
         << ", rho = " << parameters.density << ", c_p = " << dilatational_wave_speed(body);
-    if (body < spheres.size() && spheres[body].radius > 0.)
-      out << ", sphere R = " << spheres[body].radius
-          << " centred at z = " << spheres[body].centre[1];
+    if (const std::optional<SphereGeometry> sphere = geometry.sphere(body))
+      out << ", sphere R = " << sphere->radius << " centred at z = " << sphere->centre[1];
     out << "\n";
   }
   out << "  Courant number c_p dt / h_min = "

@@ -14,6 +14,7 @@
 #include <gmsh.h>
 #include <set>
 #include <sstream>
+#include <tuple>
 #include <unistd.h>
 
 namespace dyncontact
@@ -28,6 +29,15 @@ std::string one_line(const std::string& text)
   while (words >> word)
     line += (line.empty() ? "" : " ") + word;
   return line;
+}
+
+/** The numbers of `numbers`, ascending, separated by ", " (e.g. "2, 3"). */
+std::string listed(const std::set<unsigned int>& numbers)
+{
+  std::string list;
+  for (const unsigned int number : numbers)
+    list += (list.empty() ? "" : ", ") + std::to_string(number);
+  return list;
 }
 
 /** The ONELAB folder of the parameters of a .geo file (DefineConstant ... Name "Parameters/x"). */
@@ -294,7 +304,7 @@ void read_msh_file(const std::string& msh_file,
 unsigned int assign_bodies(const std::string& filename, Triangulation<2>& triangulation)
 {
   unsigned int n_not_quadrilateral = 0;
-  std::set<types::material_id> surface_tags;
+  std::set<unsigned int> surface_tags;
   for (const auto& cell : triangulation.active_cell_iterators())
   {
     if (cell->reference_cell() != ReferenceCells::Quadrilateral)
@@ -313,27 +323,35 @@ unsigned int assign_bodies(const std::string& filename, Triangulation<2>& triang
 
   const unsigned int n_bodies = *surface_tags.rbegin();
   if (surface_tags.size() != n_bodies)
-  {
-    std::string found;
-    for (const types::material_id tag : surface_tags)
-      found += (found.empty() ? "" : ", ") + std::to_string(tag);
-    throw InputError(about(filename) + "its physical surfaces are " + found +
+    throw InputError(about(filename) + "its physical surfaces are " + listed(surface_tags) +
                      ", but they must be numbered 1, 2, ..., one per body, without gaps.");
-  }
 
   for (const auto& cell : triangulation.active_cell_iterators())
     cell->set_material_id(cell->material_id() - 1);
   return n_bodies;
 }
 
+/** The boundary faces of one physical curve other than the axis, as collect_curves() found them. */
+struct CurveFaces
+{
+  /** The bodies (0-based) of the faces' cells. */
+  std::set<unsigned int> bodies;
+
+  /** The two vertices of every face, face by face (shared vertices twice). */
+  std::vector<Point<2>> vertices;
+
+  /** Sum over the faces of the vector from the cell's centre to the face's: out of the body. */
+  Tensor<1, 2> outward;
+};
+
 /**
- * Checks that the mesh lies in r >= 0, that every boundary face is on the axis (on r = 0) or on
- * the surface of its own cell's body, and that the axis and each body's surface have faces.
- * Returns the vertices of each body's surface faces.
+ * Checks that the mesh lies in r >= 0, that every boundary face is in a physical curve, that the
+ * faces of physical curve 1 lie on the axis r = 0 and that all boundary faces on r = 0 are in it
+ * (so curve 1 may be absent only if no boundary face lies on r = 0). Returns the faces of every
+ * other physical curve, by tag.
  */
-std::vector<std::vector<Point<2>>> check_boundaries(const std::string& filename,
-                                                    const Triangulation<2>& triangulation,
-                                                    const unsigned int n_bodies)
+std::map<types::boundary_id, CurveFaces> collect_curves(const std::string& filename,
+                                                        const Triangulation<2>& triangulation)
 {
   const double tolerance = 1e-8 * GridTools::diameter(triangulation);
   for (const Point<2>& vertex : triangulation.get_vertices())
@@ -342,60 +360,59 @@ std::vector<std::vector<Point<2>>> check_boundaries(const std::string& filename,
                        "; an axisymmetric mesh must lie in r >= 0.");
 
   bool has_axis = false;
-  std::vector<std::vector<Point<2>>> surface_vertices(n_bodies);
+  std::set<unsigned int> curves_on_axis;
+  std::map<types::boundary_id, CurveFaces> curves;
   for (const auto& cell : triangulation.active_cell_iterators())
     for (const auto& face : cell->face_iterators())
     {
       if (!face->at_boundary())
         continue;
       const types::boundary_id id = face->boundary_id();
+      const bool on_axis =
+          std::abs(face->vertex(0)[0]) <= tolerance && std::abs(face->vertex(1)[0]) <= tolerance;
+      if (id == 0)
+        throw InputError(about(filename) +
+                         "some boundary faces belong to no physical curve; each must be in "
+                         "physical curve 1 (axis) or in a physical curve t >= 2 of one body.");
       if (id == SphereMeshIds::axis)
       {
-        if (std::abs(face->vertex(0)[0]) > tolerance || std::abs(face->vertex(1)[0]) > tolerance)
+        if (!on_axis)
           throw InputError(about(filename) + "physical curve " + std::to_string(id) +
                            " (the axis) has faces off the axis r = 0.");
         has_axis = true;
+        continue;
       }
-      else if (id == SphereMeshIds::surface(cell->material_id()))
-      {
-        surface_vertices[cell->material_id()].push_back(face->vertex(0));
-        surface_vertices[cell->material_id()].push_back(face->vertex(1));
-      }
-      else if (id == 0)
-        throw InputError(about(filename) +
-                         "some boundary faces belong to no physical curve; each must be in "
-                         "physical curve 1 (axis) or b + 1 (surface of body b = 1, 2, ...).");
-      else
-        throw InputError(about(filename) + "boundary faces of body " +
-                         std::to_string(cell->material_id() + 1) + " are in physical curve " +
-                         std::to_string(id) + ", but only 1 (axis) and " +
-                         std::to_string(SphereMeshIds::surface(cell->material_id())) +
-                         " (its surface) are allowed there.");
+      if (on_axis)
+        curves_on_axis.insert(id);
+      CurveFaces& curve = curves[id];
+      curve.bodies.insert(cell->material_id());
+      curve.vertices.push_back(face->vertex(0));
+      curve.vertices.push_back(face->vertex(1));
+      curve.outward += face->center() - cell->center();
     }
 
-  if (!has_axis)
-    throw InputError(about(filename) + "physical curve 1 (the axis r = 0) is missing.");
-  for (unsigned int body = 0; body < n_bodies; ++body)
-    if (surface_vertices[body].empty())
-      throw InputError(about(filename) + "physical curve " +
-                       std::to_string(SphereMeshIds::surface(body)) + " (the surface of body " +
-                       std::to_string(body + 1) + ") is missing.");
-  return surface_vertices;
+  if (!curves_on_axis.empty())
+  {
+    const std::string curves_named =
+        (curves_on_axis.size() == 1 ? "physical curve " : "physical curves ") +
+        listed(curves_on_axis);
+    throw InputError(about(filename) + (has_axis ? "the faces of " + curves_named +
+                                                       " on the axis r = 0 belong in physical "
+                                                       "curve 1 (the axis)."
+                                                 : "physical curve 1 (the axis r = 0) is "
+                                                   "missing; its faces are in " +
+                                                       curves_named + "."));
+  }
+  return curves;
 }
 
 /**
  * The circle centred on the axis that fits `points` best (least squares in r^2 + (z - z_c)^2 =
- * R^2, linear in z_c and R^2 - z_c^2). Throws InputError if the points are not on such a circle
- * (relative deviation above 1e-6).
+ * R^2, linear in z_c and R^2 - z_c^2). Its radius is not finite if no such circle fits (points at
+ * one z).
  */
-SphereGeometry fit_sphere(const std::string& filename,
-                          const unsigned int body,
-                          const std::vector<Point<2>>& points)
+SphereGeometry fit_circle(const std::vector<Point<2>>& points)
 {
-  const std::string not_a_sphere =
-      about(filename) + "the surface of body " + std::to_string(body + 1) + " (physical curve " +
-      std::to_string(SphereMeshIds::surface(body)) + ") is not a circle centred on the axis r = 0";
-
   // Work in z relative to the mean, which decouples the two unknowns.
   double mean_z = 0;
   for (const Point<2>& point : points)
@@ -409,40 +426,119 @@ SphereGeometry fit_sphere(const std::string& filename,
     sum_z_rho2 += z * rho2;
     mean_rho2 += rho2 / points.size();
   }
-  if (sum_z2 == 0)
-    throw InputError(not_a_sphere + ".");
+  // sum_z2 = 0 gives a centre and radius of inf or NaN.
   const double shifted_centre_z = sum_z_rho2 / (2 * sum_z2);
 
-  SphereGeometry sphere;
-  sphere.centre = Point<2>(0, mean_z + shifted_centre_z);
-  sphere.radius = std::sqrt(mean_rho2 + shifted_centre_z * shifted_centre_z);
-
-  double largest_deviation = 0;
-  for (const Point<2>& point : points)
-    largest_deviation =
-        std::max(largest_deviation, std::abs(point.distance(sphere.centre) - sphere.radius));
-  if (!(largest_deviation <= 1e-6 * sphere.radius))
-    throw InputError(not_a_sphere +
-                     " (the best fit, centre z = " + format_number(sphere.centre[1]) +
-                     " and radius " + format_number(sphere.radius) + ", misses a vertex by " +
-                     format_number(largest_deviation) + ").");
-  return sphere;
+  SphereGeometry circle;
+  circle.centre = Point<2>(0, mean_z + shifted_centre_z);
+  circle.radius = std::sqrt(mean_rho2 + shifted_centre_z * shifted_centre_z);
+  return circle;
 }
 
-/** Sets the manifold ids of SphereMeshIds and attaches the manifolds. */
-void attach_manifolds(const std::vector<SphereGeometry>& spheres, Triangulation<2>& triangulation)
+/**
+ * The straight line that fits `points` best (total least squares: through their mean, along the
+ * principal direction of their scatter), as the mean and the unit normal, and its length: the
+ * extent of the points along it.
+ */
+std::tuple<Point<2>, Tensor<1, 2>, double> fit_line(const std::vector<Point<2>>& points)
+{
+  Point<2> mean;
+  for (const Point<2>& point : points)
+    mean += point / static_cast<double>(points.size());
+  double s_rr = 0, s_rz = 0, s_zz = 0;
+  for (const Point<2>& point : points)
+  {
+    const Tensor<1, 2> d = point - mean;
+    s_rr += d[0] * d[0];
+    s_rz += d[0] * d[1];
+    s_zz += d[1] * d[1];
+  }
+  const double angle = 0.5 * std::atan2(2 * s_rz, s_rr - s_zz);
+  const Tensor<1, 2> direction({std::cos(angle), std::sin(angle)});
+  const Tensor<1, 2> normal({-std::sin(angle), std::cos(angle)});
+  double lowest = 0, highest = 0;
+  for (const Point<2>& point : points)
+  {
+    lowest  = std::min(lowest, (point - mean) * direction);
+    highest = std::max(highest, (point - mean) * direction);
+  }
+  return {mean, normal, highest - lowest};
+}
+
+/**
+ * Physical curve `id` with the faces `faces`, classified: its body (all faces must bound cells of
+ * one body), a straight line if every vertex lies within 1e-6 of the curve's length from the
+ * best-fit line (the normal oriented out of the body), else a circle centred on the axis if every
+ * vertex lies within 1e-6 R of the best-fit one. Throws InputError naming `filename` otherwise.
+ */
+BoundaryCurve
+classify_curve(const std::string& filename, const types::boundary_id id, const CurveFaces& faces)
+{
+  const std::string curve = "physical curve " + std::to_string(id);
+  if (faces.bodies.size() > 1)
+  {
+    std::set<unsigned int> bodies;
+    for (const unsigned int body : faces.bodies)
+      bodies.insert(body + 1);
+    throw InputError(about(filename) + curve + " bounds cells of bodies " + listed(bodies) +
+                     "; each physical curve other than the axis (1) must bound one body only.");
+  }
+  BoundaryCurve classified;
+  classified.id   = id;
+  classified.body = *faces.bodies.begin();
+
+  const auto [mean, normal, length] = fit_line(faces.vertices);
+  double line_deviation             = 0;
+  for (const Point<2>& point : faces.vertices)
+    line_deviation = std::max(line_deviation, std::abs((point - mean) * normal));
+  if (line_deviation <= 1e-6 * length)
+  {
+    classified.line = {mean, normal * faces.outward > 0 ? normal : -normal};
+    return classified;
+  }
+
+  const SphereGeometry circle = fit_circle(faces.vertices);
+  double circle_deviation     = 0;
+  for (const Point<2>& point : faces.vertices)
+    circle_deviation =
+        std::max(circle_deviation, std::abs(point.distance(circle.centre) - circle.radius));
+  if (std::isfinite(circle.radius) && circle_deviation <= 1e-6 * circle.radius)
+  {
+    classified.circle = circle;
+    return classified;
+  }
+  throw InputError(
+      about(filename) + curve + " (of body " + std::to_string(classified.body + 1) +
+      ") is neither a circle centred on the axis r = 0 nor a straight line; the best-fit line "
+      "misses a vertex by " +
+      format_number(line_deviation) + " (allowed: 1e-6 of its length " + format_number(length) +
+      ")" +
+      (std::isfinite(circle.radius)
+           ? ", the best-fit circle, centre z = " + format_number(circle.centre[1]) +
+                 " and radius " + format_number(circle.radius) + ", by " +
+                 format_number(circle_deviation) + " (allowed: 1e-6 of the radius)."
+           : "."));
+}
+
+/**
+ * Sets the manifold ids of read_gmsh_mesh() and attaches the manifolds: a SphericalManifold with
+ * the curve's id on each circular curve, flat faces on the axis and on straight curves, the
+ * TransfiniteInterpolationManifold on the cells.
+ */
+void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulation)
 {
   triangulation.set_all_manifold_ids(SphereMeshIds::interior_manifold);
-  for (const auto& cell : triangulation.active_cell_iterators())
-    for (const auto& face : cell->face_iterators())
-      if (face->at_boundary())
-        face->set_manifold_id(face->boundary_id() == SphereMeshIds::axis
-                                  ? numbers::flat_manifold_id
-                                  : SphereMeshIds::surface_manifold(cell->material_id()));
+  for (const auto& face : triangulation.active_face_iterators())
+    if (face->at_boundary())
+    {
+      const BoundaryCurve* curve = geometry.curve(face->boundary_id());
+      face->set_manifold_id(curve != nullptr && curve->circle ? curve->id
+                                                              : numbers::flat_manifold_id);
+    }
 
-  for (unsigned int body = 0; body < spheres.size(); ++body)
-    triangulation.set_manifold(SphereMeshIds::surface_manifold(body),
-                               SphericalManifold<2>(spheres[body].centre));
+  for (const BoundaryCurve& curve : geometry.curves)
+    if (curve.circle)
+      triangulation.set_manifold(curve.id, SphericalManifold<2>(curve.circle->centre));
   // It interpolates from the cells' boundaries, so it needs the manifolds above in place.
   TransfiniteInterpolationManifold<2> interior;
   interior.initialize(triangulation);
@@ -450,9 +546,32 @@ void attach_manifolds(const std::vector<SphereGeometry>& spheres, Triangulation<
 }
 } // namespace
 
-std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
-                                           const std::map<std::string, double>& geo_parameters,
-                                           Triangulation<2>& triangulation)
+const BoundaryCurve* MeshGeometry::curve(const types::boundary_id id) const
+{
+  const auto found = std::lower_bound(curves.begin(),
+                                      curves.end(),
+                                      id,
+                                      [](const BoundaryCurve& curve, const types::boundary_id key)
+                                      { return curve.id < key; });
+  return found != curves.end() && found->id == id ? &*found : nullptr;
+}
+
+std::optional<SphereGeometry> MeshGeometry::sphere(const unsigned int body) const
+{
+  const BoundaryCurve* only = nullptr;
+  unsigned int n_curves     = 0;
+  for (const BoundaryCurve& curve : curves)
+    if (curve.body == body)
+    {
+      only = &curve;
+      ++n_curves;
+    }
+  return n_curves == 1 ? only->circle : std::nullopt;
+}
+
+MeshGeometry read_gmsh_mesh(const std::string& filename,
+                            const std::map<std::string, double>& geo_parameters,
+                            Triangulation<2>& triangulation)
 {
   Assert(triangulation.n_cells() == 0, ExcMessage("The triangulation must be empty."));
 
@@ -476,15 +595,12 @@ std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
           first_order_mesh(filename, geo_parameters, msh_file.name()), filename, triangulation);
     }
 
-    const unsigned int n_bodies = assign_bodies(filename, triangulation);
-    const std::vector<std::vector<Point<2>>> surface_vertices =
-        check_boundaries(filename, triangulation, n_bodies);
-    std::vector<SphereGeometry> spheres;
-    for (unsigned int body = 0; body < n_bodies; ++body)
-      spheres.push_back(fit_sphere(filename, body, surface_vertices[body]));
-
-    attach_manifolds(spheres, triangulation);
-    return spheres;
+    MeshGeometry geometry;
+    geometry.n_bodies = assign_bodies(filename, triangulation);
+    for (const auto& [id, faces] : collect_curves(filename, triangulation))
+      geometry.curves.push_back(classify_curve(filename, id, faces));
+    attach_manifolds(geometry, triangulation);
+    return geometry;
   }
   catch (const InputError&)
   {

@@ -1,7 +1,5 @@
 #include "mesh_checks.h"
 
-#include <dyncontact/models/gmsh_mesh.h>
-
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -187,6 +185,20 @@ std::string ScratchDirectory::write(const std::string& name, const std::string& 
 {
   std::ofstream(file(name)) << content;
   return file(name);
+}
+
+std::vector<SphereGeometry> read_spheres(const std::string& filename,
+                                         const std::map<std::string, double>& parameters,
+                                         Triangulation<2>& triangulation)
+{
+  const MeshGeometry geometry = read_gmsh_mesh(filename, parameters, triangulation);
+  std::vector<SphereGeometry> spheres;
+  for (unsigned int body = 0; body < geometry.n_bodies; ++body)
+    if (const std::optional<SphereGeometry> sphere = geometry.sphere(body))
+      spheres.push_back(*sphere);
+    else
+      ADD_FAILURE() << "body " << body + 1 << " of " << filename << " is not a sphere";
+  return spheres;
 }
 
 void expect_input_error(const std::string& filename,

@@ -1,9 +1,10 @@
 #pragma once
 // Test support for meshes read from gmsh files (test_gmsh_mesh.cc, test_general_meshes.cc):
-// volumes of solids of revolution, boundary nodes, node matching across a contact interface,
-// Jacobians, scratch files and the expected form of InputError.
+// reading sphere meshes, volumes of solids of revolution, boundary nodes, node matching across a
+// contact interface, Jacobians, scratch files and the expected form of InputError.
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/models/gmsh_mesh.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -97,6 +98,15 @@ public:
 private:
   std::filesystem::path path;
 };
+
+/**
+ * Reads `filename` with `parameters` by read_gmsh_mesh() into the empty `triangulation` and
+ * returns each body's sphere (MeshGeometry::sphere()), indexed by body; expects every body to be
+ * one (a body that is not is left out, which shortens the result).
+ */
+std::vector<SphereGeometry> read_spheres(const std::string& filename,
+                                         const std::map<std::string, double>& parameters,
+                                         Triangulation<2>& triangulation);
 
 /**
  * Expects read_gmsh_mesh(filename, parameters) to throw InputError whose message is one line,

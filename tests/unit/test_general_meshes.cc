@@ -1,6 +1,6 @@
 // Checks the gmsh geometries for contact on non-matching meshes
 // (meshes/two_spheres_nonmatching.geo, dissimilar_spheres.geo, sphere_on_block.geo), each at its
-// defaults:
+// defaults, and read_gmsh_mesh() on bodies of other shapes:
 //  - two bodies (material ids 0, 1) with exactly the expected boundary ids, only quadrilaterals,
 //    positive cell measures and a positive Jacobian of the Q2 mapping at every Gauss point;
 //  - each sphere's volume (2 pi r-weighted area with the Q2 mapping) against 4/3 pi R^3, the
@@ -9,30 +9,36 @@
 //  - the facing surface nodes of body 1 do not all have a node of body 2 across from them (same r
 //    to 1e-6): node-to-node contact is impossible, as intended; the same count is 0 on the
 //    matching meshes of two_spheres.geo, so it detects matching meshes;
-//  - sphere_on_block.geo read from a second-order export (9-node quadrilaterals, as by
-//    `gmsh -2 -order 2`) on its vertices (the sphere pairs: test_gmsh_mesh.cc);
-//  - the new parameters' range checks, one line of InputError each.
-// The sphere meshes are read by read_gmsh_mesh(); the sphere on the block is read by deal.II's
-// GridIn with the same ids, because read_gmsh_mesh() takes only bodies bounded by a sphere and the
-// axis (issue 12, Build 1, generalizes it).
+//  - the boundary curves read_gmsh_mesh() finds: the sphere's circle and the block's straight
+//    faces with their outward normals, flat where straight (the Q2 mid-sides stay on the face);
+//    a ring off the axis with four straight sides (a short vertical side is a line, not an arc);
+//    a hollow sphere with two circles (not a sphere);
+//  - the model on the sphere and the block: no Hertz reference, the contact search radius;
+//  - the new parameters' range checks and bad boundary curves, one line of InputError each.
+// The second-order export of sphere_on_block.geo is read in test_gmsh_mesh.cc.
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/gmsh_mesh.h>
 
-#include <deal.II/grid/grid_in.h>
-#include <deal.II/grid/manifold_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/reference_cell.h>
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
-#include <gmsh.h>
 #include <gtest/gtest.h>
 #include <iostream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "case_run.h"
 #include "mesh_checks.h"
 
 namespace
@@ -127,7 +133,7 @@ unsigned int expect_sphere_pair(const std::string& file,
                                 const double gap,
                                 Triangulation<2>& triangulation)
 {
-  const std::vector<SphereGeometry> spheres = read_gmsh_mesh(file, parameters, triangulation);
+  const std::vector<SphereGeometry> spheres = read_spheres(file, parameters, triangulation);
   EXPECT_EQ(spheres.size(), 2u);
   if (spheres.size() != 2)
     return 0;
@@ -166,45 +172,6 @@ unsigned int expect_sphere_pair(const std::string& file,
   return n_without_partner;
 }
 
-/**
- * sphere_on_block.geo with `parameters`, exported in second order, reduced by gmsh to its
- * vertices and read by deal.II's GridIn with the ids of read_gmsh_mesh() (material id = physical
- * surface - 1, boundary id = physical curve) and a SphericalManifold about `sphere_centre` on the
- * sphere's surface; the block's faces are flat. Expects the export to hold 9-node
- * quadrilaterals only.
- */
-void read_sphere_on_block(const std::map<std::string, double>& parameters,
-                          const Point<2>& sphere_centre,
-                          Triangulation<2>& triangulation)
-{
-  const ScratchDirectory directory;
-  const std::string second_order = directory.file("second_order.msh");
-  const std::string first_order  = directory.file("first_order.msh");
-  EXPECT_EQ(write_second_order_msh(block_geo, parameters, second_order), std::vector<int>{10});
-
-  gmsh::initialize(0, nullptr, false);
-  gmsh::option::setNumber("General.Terminal", 0);
-  gmsh::open(second_order);
-  gmsh::model::mesh::setOrder(1);
-  gmsh::option::setNumber("Mesh.MshFileVersion", 4.1);
-  gmsh::write(first_order);
-  gmsh::finalize();
-
-  GridIn<2> grid_in;
-  grid_in.attach_triangulation(triangulation);
-  std::ifstream input(first_order);
-  grid_in.read_msh(input);
-  for (const auto& cell : triangulation.active_cell_iterators())
-  {
-    cell->set_material_id(cell->material_id() - 1);
-    for (const auto& face : cell->face_iterators())
-      if (face->at_boundary() && face->boundary_id() == SphereMeshIds::surface(0))
-        face->set_manifold_id(SphereMeshIds::surface_manifold(0));
-  }
-  triangulation.set_manifold(SphereMeshIds::surface_manifold(0),
-                             SphericalManifold<2>(sphere_centre));
-}
-
 TEST(GeneralMeshes, NonmatchingSpheres)
 {
   // Defaults: R = 8, CentreDistance = 20, body 2 with Divisions 7 against 6.
@@ -215,7 +182,7 @@ TEST(GeneralMeshes, NonmatchingSpheres)
   // mirror image across: the count that is positive above is 0 on matching meshes.
   Triangulation<2> matching;
   const std::vector<SphereGeometry> spheres =
-      read_gmsh_mesh(mesh_path("two_spheres.geo"), {}, matching);
+      read_spheres(mesh_path("two_spheres.geo"), {}, matching);
   EXPECT_EQ(facing_nodes_without_partner(matching, spheres), 0u);
   std::vector<Point<2>> vertices[2];
   for (const Triangulation<2>* mesh : {&triangulation, &matching})
@@ -245,16 +212,97 @@ TEST(GeneralMeshes, DissimilarSpheres)
   expect_sphere_pair(dissimilar_geo, {{"R1", 5}, {"R2", 7}, {"Gap", 0.25}}, 5, 7, 0.25, other);
 }
 
+/**
+ * Expects `curve` to bound `body` and to be straight with the unit normal `outward_normal` (to
+ * 1e-12), its point's coordinate `coordinate` equal to `value` (to `tolerance`).
+ */
+void expect_line(const BoundaryCurve* curve,
+                 const unsigned int body,
+                 const Tensor<1, 2>& outward_normal,
+                 const unsigned int coordinate,
+                 const double value,
+                 const double tolerance)
+{
+  ASSERT_NE(curve, nullptr);
+  EXPECT_EQ(curve->body, body) << "curve " << curve->id;
+  EXPECT_FALSE(curve->circle) << "curve " << curve->id;
+  ASSERT_TRUE(curve->line) << "curve " << curve->id;
+  const auto& [point, normal] = *curve->line;
+  std::cout << "  curve " << curve->id << ": straight through (" << point << "), normal (" << normal
+            << ")" << std::endl;
+  EXPECT_LT((normal - outward_normal).norm(), 1e-12) << "curve " << curve->id;
+  EXPECT_NEAR(point[coordinate], value, tolerance) << "curve " << curve->id;
+}
+
+/**
+ * Largest distance of the Q2 mid-side nodes of the faces on boundary `id` from the line through
+ * `point` with unit normal `normal`, both where the face's manifold puts them and where the Q2
+ * mapping of the cell puts the unit face's mid-point.
+ */
+double largest_mid_side_off_line(const Triangulation<2>& triangulation,
+                                 const types::boundary_id id,
+                                 const Point<2>& point,
+                                 const Tensor<1, 2>& normal)
+{
+  const MappingQ<2> mapping(2);
+  // The mid-points of the faces of the unit cell, in deal.II's face order.
+  const Point<2> unit_mid_sides[4] = {{0, 0.5}, {1, 0.5}, {0.5, 0}, {0.5, 1}};
+  double largest                   = 0;
+  for (const auto& cell : triangulation.active_cell_iterators())
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == id)
+      {
+        EXPECT_EQ(cell->face(f)->manifold_id(), numbers::flat_manifold_id);
+        const Point<2> on_manifold = cell->face(f)->center(/*respect_manifold=*/true);
+        const Point<2> mapped      = mapping.transform_unit_to_real_cell(cell, unit_mid_sides[f]);
+        largest                    = std::max({largest,
+                                               std::abs((on_manifold - point) * normal),
+                                               std::abs((mapped - point) * normal)});
+      }
+  return largest;
+}
+
 TEST(GeneralMeshes, SphereOnBlock)
 {
   // Defaults: the sphere R = 8 above the block, its contact pole Gap = 4 above the block's top
   // face z = 0; the block 40 wide and 40 deep; the contact zone 2 x 2 in 8 x 8 cells.
   const double radius = 8, gap = 4, block_radius = 40, block_height = 40;
   Triangulation<2> triangulation;
-  read_sphere_on_block({}, Point<2>(0, gap + radius), triangulation);
+  const MeshGeometry geometry  = read_gmsh_mesh(block_geo, {}, triangulation);
   const types::boundary_id top = 3, side = 4, bottom = 5;
   expect_valid_cells(triangulation,
                      {SphereMeshIds::axis, SphereMeshIds::surface(0), top, side, bottom});
+
+  // The curves read_gmsh_mesh() finds: the sphere's circle, fitted to 16-digit vertices, and the
+  // block's three straight faces, their normals out of the block. gmsh writes the block's
+  // vertices on its faces to about 1e-15 of the block's size; 1e-12 leaves room.
+  ASSERT_EQ(geometry.n_bodies, 2u);
+  ASSERT_EQ(geometry.curves.size(), 4u);
+  EXPECT_EQ(geometry.curve(SphereMeshIds::axis), nullptr);
+  const BoundaryCurve* sphere_surface = geometry.curve(SphereMeshIds::surface(0));
+  ASSERT_NE(sphere_surface, nullptr);
+  EXPECT_EQ(sphere_surface->body, 0u);
+  EXPECT_FALSE(sphere_surface->line);
+  ASSERT_TRUE(sphere_surface->circle);
+  EXPECT_NEAR(sphere_surface->circle->radius, radius, 1e-12 * radius);
+  EXPECT_LT(sphere_surface->circle->centre.distance(Point<2>(0, gap + radius)), 1e-12 * radius);
+  expect_line(geometry.curve(top), 1, Tensor<1, 2>({0., 1.}), 1, 0, 1e-12 * block_height);
+  expect_line(
+      geometry.curve(side), 1, Tensor<1, 2>({1., 0.}), 0, block_radius, 1e-12 * block_radius);
+  expect_line(
+      geometry.curve(bottom), 1, Tensor<1, 2>({0., -1.}), 1, -block_height, 1e-12 * block_height);
+  const std::optional<SphereGeometry> sphere = geometry.sphere(0);
+  ASSERT_TRUE(sphere);
+  EXPECT_EQ(sphere->centre, sphere_surface->circle->centre);
+  EXPECT_EQ(sphere->radius, sphere_surface->circle->radius);
+  EXPECT_FALSE(geometry.sphere(1));
+
+  // The top face stays flat: its Q2 mid-sides lie on z = 0, from the manifold and the mapping
+  // alike (the block's vertices are exact, so only round-off of the interpolation remains).
+  const double top_off_plane =
+      largest_mid_side_off_line(triangulation, top, Point<2>(0, 0), Tensor<1, 2>({0., 1.}));
+  std::cout << "  top face: Q2 mid-sides off z = 0 by " << top_off_plane << std::endl;
+  EXPECT_LT(top_off_plane, 1e-12);
 
   const double sphere_volume_error = relative_sphere_volume_error(triangulation, 0, radius);
   EXPECT_LT(sphere_volume_error, sphere_volume_tolerance);
@@ -297,6 +345,200 @@ TEST(GeneralMeshes, SphereOnBlock)
             << sphere_volume_error << ", " << n_without_partner
             << " facing nodes of the sphere without a partner" << std::endl;
   EXPECT_GT(n_without_partner, 0u);
+}
+
+TEST(GeneralMeshes, SphereOnBlockModel)
+{
+  // The axisymmetric model on the sphere above the block (the paper's sphere prm with this mesh):
+  // no Hertz reference between two spheres (the block is none), only the sphere printed as one,
+  // and the node-to-segment search radius of bodies that are not both spheres: the gap between
+  // the closest boundary vertices, the contact pole (0, 4) and the contact point (0, 0), plus a
+  // quarter of the smaller height 2 R = 16.
+  const RunParameters parameters = ParameterReader(source_path("prm/spheres_rho0.001.prm"),
+                                                   {"Mesh/file=" + block_geo,
+                                                    "Mesh/geo parameters=",
+                                                    "Contact/discretization=node-to-segment"})
+                                       .parameters();
+  AxisymmetricMeshModel model(parameters.mesh, parameters.bodies);
+  Triangulation<2> triangulation;
+  model.create_triangulation(triangulation);
+  EXPECT_FALSE(model.hertz_reference());
+
+  std::ostringstream summary;
+  model.print_summary(summary, parameters.time.time_step);
+  std::cout << summary.str();
+  const std::string text = summary.str();
+  EXPECT_NE(text.find("sphere R = 8 centred at z = 12"), std::string::npos);
+  EXPECT_EQ(text.find("sphere R", text.find("body 2")), std::string::npos);
+
+  DoFHandler<2> dof_handler(triangulation);
+  dof_handler.distribute_dofs(FESystem<2>(FE_Q<2>(2), 2));
+  const NodeIndex<2> nodes(dof_handler, MappingQ<2>(2));
+  const ContactDescription<2> description = model.contact_description(nodes);
+  ASSERT_EQ(description.surface_pairs.size(), 1u);
+  EXPECT_EQ(description.surface_pairs.front().surface_a, SphereMeshIds::surface(0));
+  EXPECT_EQ(description.surface_pairs.front().surface_b, SphereMeshIds::surface(1));
+  std::cout << "  search radius " << description.surface_pairs.front().search_radius
+            << ", touching tolerance " << description.surface_pairs.front().touching_tolerance
+            << std::endl;
+  // Vertices exact to gmsh's 16 digits.
+  EXPECT_NEAR(description.surface_pairs.front().search_radius, 4 + 16. / 4, 1e-12);
+}
+
+/**
+ * A .geo file of one transfinite quadrilateral block with corners `corners` (counter-clockwise,
+ * gmsh points 1..4, lines i from point i to i + 1), `divisions` cells along each side, physical
+ * surface 1 and the physical curves `groups` (e.g. "Physical Curve(2) = {1};").
+ */
+std::string block_geo_text(const std::vector<Point<2>>& corners,
+                           const unsigned int divisions,
+                           const std::string& groups)
+{
+  std::ostringstream text;
+  text.precision(17);
+  for (unsigned int i = 0; i < 4; ++i)
+    text << "Point(" << i + 1 << ") = {" << corners[i][0] << ", " << corners[i][1] << ", 0};\n";
+  text << "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+       << "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+       << "Transfinite Curve {1, 2, 3, 4} = " << divisions + 1 << ";\n"
+       << "Transfinite Surface {1}; Recombine Surface {1};\n"
+       << "Physical Surface(1) = {1};\n"
+       << groups;
+  return text.str();
+}
+
+TEST(GeneralMeshes, CurvesOfOtherShapes)
+{
+  const ScratchDirectory directory;
+
+  // A ring of square cross-section off the axis, 1 wide and 0.01 high at r = 10, each side its
+  // own curve: no axis, four straight curves, normals out of the body. Its short sides r = 10 and
+  // r = 11 (5 vertices over 0.01) lie close to circles about the axis: the best-fit circle misses
+  // them by 7.8e-7 and 7.1e-7 (computed apart with the same fit), inside the circle test's 1e-6 R.
+  // They are straight all the same: exactly straight, they pass the line test, which comes first.
+  const std::string ring =
+      directory.write("ring.geo",
+                      block_geo_text({{10, 0}, {11, 0}, {11, 0.01}, {10, 0.01}},
+                                     4,
+                                     "Physical Curve(2) = {1}; Physical Curve(3) = {2};\n"
+                                     "Physical Curve(4) = {3}; Physical Curve(5) = {4};\n"));
+  Triangulation<2> triangulation;
+  const MeshGeometry geometry = read_gmsh_mesh(ring, {}, triangulation);
+  EXPECT_EQ(triangulation.n_active_cells(), 16u);
+  ASSERT_EQ(geometry.n_bodies, 1u);
+  ASSERT_EQ(geometry.curves.size(), 4u);
+  // gmsh's vertices on the sides are exact to round-off of the coordinates (1e-15 of 11).
+  expect_line(geometry.curve(2), 0, Tensor<1, 2>({0., -1.}), 1, 0, 1e-12);
+  expect_line(geometry.curve(3), 0, Tensor<1, 2>({1., 0.}), 0, 11, 1e-12);
+  expect_line(geometry.curve(4), 0, Tensor<1, 2>({0., 1.}), 1, 0.01, 1e-12);
+  expect_line(geometry.curve(5), 0, Tensor<1, 2>({-1., 0.}), 0, 10, 1e-12);
+  EXPECT_FALSE(geometry.sphere(0));
+  EXPECT_EQ(geometry.curve(6), nullptr);
+
+  // A hollow sphere, inner radius 1 and outer 2 about the origin, from two transfinite quarter
+  // annuli: two circles of one body, so no sphere; the inner one gets its own manifold.
+  const std::string hollow =
+      directory.write("hollow.geo",
+                      "Point(1) = {0, 0, 0}; Point(2) = {0, -1, 0}; Point(3) = {1, 0, 0};\n"
+                      "Point(4) = {0, 1, 0}; Point(5) = {0, -2, 0}; Point(6) = {2, 0, 0};\n"
+                      "Point(7) = {0, 2, 0};\n"
+                      "Circle(1) = {2, 1, 3}; Circle(2) = {3, 1, 4};\n"
+                      "Circle(3) = {5, 1, 6}; Circle(4) = {6, 1, 7};\n"
+                      "Line(5) = {5, 2}; Line(6) = {3, 6}; Line(7) = {4, 7};\n"
+                      "Curve Loop(1) = {-5, 3, -6, -1}; Plane Surface(1) = {1};\n"
+                      "Curve Loop(2) = {6, 4, -7, -2}; Plane Surface(2) = {2};\n"
+                      "Transfinite Curve {1, 2, 3, 4} = 13; Transfinite Curve {5, 6, 7} = 4;\n"
+                      "Transfinite Surface {1, 2}; Recombine Surface {1, 2};\n"
+                      "Physical Surface(1) = {1, 2}; Physical Curve(1) = {5, 7};\n"
+                      "Physical Curve(2) = {3, 4}; Physical Curve(3) = {1, 2};\n");
+  Triangulation<2> shell;
+  const MeshGeometry shell_geometry = read_gmsh_mesh(hollow, {}, shell);
+  ASSERT_EQ(shell_geometry.curves.size(), 2u);
+  for (const auto& [id, radius] : {std::pair<types::boundary_id, double>{2, 2}, {3, 1}})
+  {
+    const BoundaryCurve* curve = shell_geometry.curve(id);
+    ASSERT_NE(curve, nullptr);
+    ASSERT_TRUE(curve->circle);
+    EXPECT_FALSE(curve->line);
+    // The fit to gmsh's 16-digit vertices on the arcs.
+    EXPECT_NEAR(curve->circle->radius, radius, 1e-12);
+    EXPECT_LT(curve->circle->centre.distance(Point<2>(0, 0)), 1e-12);
+    double largest_off_circle = 0;
+    for (const Point<2>& node : boundary_q2_nodes(shell, id))
+      largest_off_circle = std::max(largest_off_circle, std::abs(node.norm() - radius));
+    EXPECT_LT(largest_off_circle, 1e-12);
+  }
+  EXPECT_FALSE(shell_geometry.sphere(0));
+  // The inner surface's cells bend with it: the volume of the shell, 4/3 pi (2^3 - 1^3), with 24
+  // edges on each half circle, as many as on sphere.geo's default surface, to the same bound
+  // (test_gmsh_mesh.cc).
+  const double shell_volume = 4. / 3. * numbers::PI * 7;
+  const double shell_error  = std::abs(body_volume(shell, 0) - shell_volume) / shell_volume;
+  std::cout << "  hollow sphere: relative volume error " << shell_error << std::endl;
+  EXPECT_LT(shell_error, 1e-5);
+}
+
+TEST(GeneralMeshes, BadBoundaryCurvesGiveOneLine)
+{
+  const ScratchDirectory directory;
+
+  // Curve 2 on sides of both bodies: two squares, body 2 above body 1.
+  expect_input_error(
+      directory.write("shared.msh",
+                      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+                      "$Nodes\n8\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n"
+                      "5 0 2 0\n6 1 2 0\n7 1 3 0\n8 0 3 0\n$EndNodes\n"
+                      "$Elements\n10\n1 3 2 1 1 1 2 3 4\n2 3 2 2 2 5 6 7 8\n"
+                      "3 1 2 1 1 4 1\n4 1 2 1 1 8 5\n"
+                      "5 1 2 2 1 1 2\n6 1 2 2 1 2 3\n7 1 2 3 1 3 4\n"
+                      "8 1 2 3 2 5 6\n9 1 2 2 2 6 7\n10 1 2 2 2 7 8\n$EndElements\n"),
+      {},
+      "physical curve 2 bounds cells of bodies 1, 2; each physical curve other than the axis (1) "
+      "must bound one body only");
+
+  // A quarter ellipse, semi-axes 2 along r and 1 along z, as two arcs in curve 2 (with the
+  // straight bottom z = 0 in curve 3): neither a circle about the axis nor a line.
+  expect_input_error(
+      directory.write("ellipse.geo",
+                      "Point(1) = {0, 0, 0}; Point(2) = {2, 0, 0};\n"
+                      "Point(3) = {2 * Cos(Pi / 4), Sin(Pi / 4), 0}; Point(4) = {0, 1, 0};\n"
+                      "Line(1) = {1, 2}; Ellipse(2) = {2, 1, 2, 3}; Ellipse(3) = {3, 1, 2, 4};\n"
+                      "Line(4) = {4, 1}; Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+                      "Transfinite Curve {1, 2, 3, 4} = 5; Transfinite Surface {1};\n"
+                      "Recombine Surface {1}; Physical Surface(1) = {1};\n"
+                      "Physical Curve(1) = {4}; Physical Curve(2) = {2, 3};\n"
+                      "Physical Curve(3) = {1};\n"),
+      {},
+      "physical curve 2 (of body 1) is neither a circle centred on the axis r = 0 nor a straight "
+      "line");
+
+  // The ring of CurvesOfOtherShapes with its inner side r = 10 in no physical curve.
+  expect_input_error(
+      directory.write("untagged.geo",
+                      block_geo_text({{10, 0}, {11, 0}, {11, 0.01}, {10, 0.01}},
+                                     4,
+                                     "Physical Curve(2) = {1}; Physical Curve(3) = {2};\n"
+                                     "Physical Curve(4) = {3};\n")),
+      {},
+      "some boundary faces belong to no physical curve");
+
+  // A square on the axis whose axis side is in curve 2, with and without a curve 1 elsewhere
+  // (two cells, the lower one's axis side in curve 1).
+  const std::string axis_in_curve_2 =
+      block_geo_text({{0, 0}, {1, 0}, {1, 1}, {0, 1}}, 2, "Physical Curve(2) = {1, 2, 3, 4};\n");
+  expect_input_error(directory.write("no_axis.geo", axis_in_curve_2),
+                     {},
+                     "physical curve 1 (the axis r = 0) is missing; its faces are in physical "
+                     "curve 2");
+  expect_input_error(
+      directory.write("axis_split.msh",
+                      "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+                      "$Nodes\n6\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n5 1 2 0\n6 0 2 0\n"
+                      "$EndNodes\n$Elements\n8\n1 3 2 1 1 1 2 3 4\n2 3 2 1 1 4 3 5 6\n"
+                      "3 1 2 1 1 4 1\n4 1 2 2 1 6 4\n5 1 2 3 1 1 2\n"
+                      "6 1 2 4 1 2 3\n7 1 2 4 1 3 5\n8 1 2 5 1 5 6\n$EndElements\n"),
+      {},
+      "the faces of physical curve 2 on the axis r = 0 belong in physical curve 1 (the axis)");
 }
 
 TEST(GeneralMeshes, BadParametersGiveOneLine)

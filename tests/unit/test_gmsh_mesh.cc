@@ -9,7 +9,9 @@
 //    slender cells, the facing surfaces mirrored;
 //  - all cells quadrilaterals with a positive Jacobian at every Gauss point of the Q2 mapping;
 //  - a second-order .msh file (9-node quadrilaterals) read on its vertices (sphere.geo and the
-//    sphere pairs of test_general_meshes.cc);
+//    meshes of test_general_meshes.cc);
+//  - the sphere pairs of test_general_meshes.cc read as by the sphere-only reader before it: same
+//    cells, vertices and spheres, a spherical manifold on each sphere;
 //  - bad input: every kind gives one line of InputError naming the file.
 #include <dyncontact/models/gmsh_mesh.h>
 
@@ -21,6 +23,7 @@
 #include <gtest/gtest.h>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,7 +49,7 @@ std::string unit_square_msh(const std::string& elements)
 TEST(GmshMesh, SphereVolumeConvergesUnderRefinement)
 {
   Triangulation<2> triangulation;
-  const std::vector<SphereGeometry> spheres = read_gmsh_mesh(sphere_geo, {}, triangulation);
+  const std::vector<SphereGeometry> spheres = read_spheres(sphere_geo, {}, triangulation);
   ASSERT_EQ(spheres.size(), 1u);
   EXPECT_NEAR(spheres[0].radius, 8, 1e-12);
   EXPECT_NEAR(spheres[0].centre.distance(Point<2>(0, 0)), 0, 1e-12);
@@ -95,7 +98,7 @@ TEST(GmshMesh, TwoSpheresAreMirrorImages)
 
   Triangulation<2> triangulation;
   const std::vector<SphereGeometry> spheres =
-      read_gmsh_mesh(two_spheres_geo, {{"Divisions", 3}}, triangulation);
+      read_spheres(two_spheres_geo, {{"Divisions", 3}}, triangulation);
   std::cout << "  two_spheres.geo (Divisions 3): " << triangulation.n_active_cells() << " cells"
             << std::endl;
   ASSERT_EQ(spheres.size(), 2u);
@@ -193,10 +196,10 @@ TEST(GmshMesh, HertzFamilyResolvesTheContactPoles)
   for (const Member& member : {Member{0, 432, 0.2, 0.35, 5}, Member{2, 6912, 0.06, 0.08, 14}})
   {
     Triangulation<2> triangulation;
-    const std::vector<SphereGeometry> spheres = read_gmsh_mesh(
-        two_spheres_geo,
-        {{"Refinement", member.refinement}, {"PoleGrading", 10}, {"CoreOffset", 0.3}},
-        triangulation);
+    const std::vector<SphereGeometry> spheres =
+        read_spheres(two_spheres_geo,
+                     {{"Refinement", member.refinement}, {"PoleGrading", 10}, {"CoreOffset", 0.3}},
+                     triangulation);
     ASSERT_EQ(spheres.size(), 2u);
     EXPECT_EQ(triangulation.n_active_cells(), member.n_cells);
     EXPECT_EQ(count_nonpositive_jacobians(triangulation), 0u);
@@ -276,7 +279,7 @@ TEST(GmshMesh, ReadsMshFilesLikeGeoFiles)
   gmsh::finalize();
 
   Triangulation<2> from_msh, from_geo;
-  const std::vector<SphereGeometry> spheres = read_gmsh_mesh(msh_file, {}, from_msh);
+  const std::vector<SphereGeometry> spheres = read_spheres(msh_file, {}, from_msh);
   read_gmsh_mesh(two_spheres_geo, {}, from_geo);
   EXPECT_EQ(spheres.size(), 2u);
   EXPECT_EQ(from_msh.n_active_cells(), from_geo.n_active_cells());
@@ -285,11 +288,14 @@ TEST(GmshMesh, ReadsMshFilesLikeGeoFiles)
 
 TEST(GmshMesh, ReadsSecondOrderMshFilesOnTheirVertices)
 {
-  // sphere.geo (Refinement 0) and the sphere pairs on non-matching meshes exported with 9-node
-  // quadrilaterals, as by `gmsh -2 -order 2`: read on its vertices, each is the first-order mesh
-  // of the same file, cell by cell; the mapping curves the boundary in both.
-  for (const std::string& geo_file :
-       {sphere_geo, mesh_path("two_spheres_nonmatching.geo"), mesh_path("dissimilar_spheres.geo")})
+  // sphere.geo (Refinement 0), the sphere pairs on non-matching meshes and the sphere on the
+  // block exported with 9-node quadrilaterals, as by `gmsh -2 -order 2`: read on its vertices,
+  // each is the first-order mesh of the same file, cell by cell; the mapping curves the boundary
+  // in both.
+  for (const std::string& geo_file : {sphere_geo,
+                                      mesh_path("two_spheres_nonmatching.geo"),
+                                      mesh_path("dissimilar_spheres.geo"),
+                                      mesh_path("sphere_on_block.geo")})
   {
     const ScratchDirectory directory;
     const std::string msh_file = directory.file("order_2.msh");
@@ -297,7 +303,7 @@ TEST(GmshMesh, ReadsSecondOrderMshFilesOnTheirVertices)
     ASSERT_EQ(write_second_order_msh(geo_file, {}, msh_file), std::vector<int>{10});
 
     Triangulation<2> from_msh, from_geo;
-    const unsigned int n_bodies = read_gmsh_mesh(msh_file, {}, from_msh).size();
+    const unsigned int n_bodies = read_gmsh_mesh(msh_file, {}, from_msh).n_bodies;
     read_gmsh_mesh(geo_file, {}, from_geo);
     ASSERT_EQ(from_msh.n_active_cells(), from_geo.n_active_cells()) << geo_file;
     ASSERT_EQ(from_msh.n_vertices(), from_geo.n_vertices()) << geo_file;
@@ -314,6 +320,71 @@ TEST(GmshMesh, ReadsSecondOrderMshFilesOnTheirVertices)
                   body_volume(from_geo, body),
                   1e-12 * body_volume(from_geo, body))
           << geo_file;
+  }
+}
+
+TEST(GmshMesh, SphereMeshesReadAsBefore)
+{
+  // The general reader on the shipped sphere pairs at their defaults: the cell and vertex counts
+  // of the sphere-only reader it replaced (measured with it), one circle per body, curve b + 2,
+  // the body's sphere (R1 = 8 centred at z = -10; R2 = 8 or 4 at z = 10 or 6), the spherical
+  // manifold on the circle (id b + 2) and flat axis faces. Compared bit for bit with the previous
+  // reader once (vertices, ids, manifold ids, fitted spheres, face and cell centres placed by the
+  // manifolds, also the Hertz family): identical.
+  struct Expected
+  {
+    std::string file;
+    unsigned int n_cells, n_vertices;
+    double radius_2, centre_z_2;
+  };
+  for (const Expected& expected : {Expected{"two_spheres.geo", 432, 482, 8, 10},
+                                   Expected{"two_spheres_nonmatching.geo", 482, 535, 8, 10},
+                                   Expected{"dissimilar_spheres.geo", 432, 482, 4, 6}})
+  {
+    Triangulation<2> triangulation;
+    const MeshGeometry geometry = read_gmsh_mesh(mesh_path(expected.file), {}, triangulation);
+    std::cout << "  " << expected.file << ": " << triangulation.n_active_cells() << " cells, "
+              << triangulation.n_vertices() << " vertices" << std::endl;
+    EXPECT_EQ(triangulation.n_active_cells(), expected.n_cells);
+    EXPECT_EQ(triangulation.n_vertices(), expected.n_vertices);
+    ASSERT_EQ(geometry.n_bodies, 2u);
+    ASSERT_EQ(geometry.curves.size(), 2u);
+    const SphereGeometry nominal[2] = {{Point<2>(0, -10), 8},
+                                       {Point<2>(0, expected.centre_z_2), expected.radius_2}};
+    for (unsigned int body = 0; body < 2; ++body)
+    {
+      const BoundaryCurve* curve = geometry.curve(SphereMeshIds::surface(body));
+      ASSERT_NE(curve, nullptr);
+      EXPECT_EQ(curve->body, body);
+      EXPECT_FALSE(curve->line);
+      ASSERT_TRUE(curve->circle);
+      const std::optional<SphereGeometry> sphere = geometry.sphere(body);
+      ASSERT_TRUE(sphere);
+      EXPECT_EQ(sphere->centre, curve->circle->centre);
+      EXPECT_EQ(sphere->radius, curve->circle->radius);
+      // The least-squares fit to 16-digit vertices.
+      EXPECT_LT(sphere->centre.distance(nominal[body].centre), 1e-12 * nominal[body].radius);
+      EXPECT_NEAR(sphere->radius, nominal[body].radius, 1e-12 * nominal[body].radius);
+    }
+    double largest_off_circle = 0;
+    for (const auto& face : triangulation.active_face_iterators())
+      if (face->at_boundary())
+      {
+        if (face->boundary_id() == SphereMeshIds::axis)
+        {
+          EXPECT_EQ(face->manifold_id(), numbers::flat_manifold_id);
+          continue;
+        }
+        const BoundaryCurve* curve = geometry.curve(face->boundary_id());
+        ASSERT_NE(curve, nullptr);
+        EXPECT_EQ(face->manifold_id(), curve->id);
+        largest_off_circle = std::max(
+            largest_off_circle,
+            std::abs(face->center(/*respect_manifold=*/true).distance(curve->circle->centre) -
+                     curve->circle->radius));
+      }
+    // The spherical manifold puts mid-sides on the fitted circle to round-off.
+    EXPECT_LT(largest_off_circle, 1e-12 * 8);
   }
 }
 
@@ -387,12 +458,13 @@ TEST(GmshMesh, BadInputGivesOneLineNamingTheFile)
                                      unit_square_msh("2\n1 3 2 1 1 1 2 3 4\n2 1 2 1 1 4 1\n")),
                      {},
                      "no physical curve");
-  // A square is no sphere.
+  // Three sides of a square in one curve: no circle, no line.
   expect_input_error(directory.write("square.msh",
                                      unit_square_msh("5\n1 3 2 1 1 1 2 3 4\n2 1 2 2 1 1 2\n"
                                                      "3 1 2 2 1 2 3\n4 1 2 2 1 3 4\n"
                                                      "5 1 2 1 1 4 1\n")),
                      {},
-                     "not a circle centred on the axis");
+                     "physical curve 2 (of body 1) is neither a circle centred on the axis r = 0 "
+                     "nor a straight line");
 }
 } // namespace

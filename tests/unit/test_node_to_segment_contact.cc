@@ -53,8 +53,9 @@ struct TwoSpheres
               cell->vertex(v)[1] += body_2_shift;
               moved[cell->vertex_index(v)] = true;
             }
+      // The manifold id of a circular curve is its boundary id.
       triangulation.set_manifold(
-          SphereMeshIds::surface_manifold(1),
+          SphereMeshIds::surface(1),
           SphericalManifold<2>(Point<2>(0., centre_distance / 2. + body_2_shift)));
       TransfiniteInterpolationManifold<2> interior;
       interior.initialize(triangulation);

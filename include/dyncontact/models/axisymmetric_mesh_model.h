@@ -11,7 +11,8 @@ namespace dyncontact
 {
 /**
  * Bodies of revolution in the (r, z) half plane (x = r, y = z) from a gmsh mesh, 9-node
- * quadrilaterals with a quadratic mapping and the mesh's spherical manifolds: the paper's spheres.
+ * quadrilaterals with a quadratic mapping and the mesh's manifolds (spherical on circular boundary
+ * curves, see read_gmsh_mesh()): the paper's spheres, a sphere on a block.
  * Each body has its own hyperelastic law, density, initial velocity (a parsed function of r, z) and
  * monitor node; u_r is held at zero on the symmetry axis. Momentum and tip motion are reported
  * along z. Two bodies touch through node-to-node contact of their facing surfaces.
@@ -74,8 +75,8 @@ public:
    * HertzImpact::two_spheres from R*, E*, m*) whose centres approach along the axis with the
    * initial velocities given (evaluated at the centres); first touch at (distance of the centres -
    * R1 - R2) / approach speed, at t = 0 if they touch to touching_tolerance(). Empty otherwise
-   * (one body, other shapes, overlapping spheres, spheres not approaching). Valid after
-   * create_triangulation().
+   * (one body, a body that is not a sphere (MeshGeometry::sphere()), overlapping spheres, spheres
+   * not approaching). Valid after create_triangulation().
    */
   std::optional<HertzImpact> hertz_reference() const;
   void print_summary(std::ostream& out, double time_step) const override;
@@ -83,13 +84,15 @@ public:
 private:
   /**
    * How close surfaces count as touching at t = 0: 1e-9 of the shortest cell edge, and at least
-   * the round-off of the positions (8 units in the last place of the largest |z| of a sphere).
-   * Valid after create_triangulation().
+   * the round-off of the positions (8 units in the last place of the largest |coordinate| of a
+   * vertex). Valid after create_triangulation().
    */
   double touching_tolerance() const;
   /**
-   * Node-to-segment search radius [length]: the spheres' initial gap plus a quarter of the
-   * smaller radius. Valid after create_triangulation().
+   * Node-to-segment search radius [length]: if both bodies are spheres (MeshGeometry::sphere()),
+   * their initial gap plus a quarter of the smaller radius; else the smallest distance between a
+   * boundary vertex of body 1 and one of body 2 at t = 0 plus a quarter of the smaller extent in z
+   * of the two bodies. Valid after create_triangulation().
    */
   double search_radius() const;
 
@@ -99,8 +102,14 @@ private:
   MeshParameters mesh;
   BodiesParameters bodies;
   std::vector<ContactPairParameters> declared_pairs;
-  std::vector<SphereGeometry> spheres;
+  MeshGeometry geometry;
   unsigned int n_cells;
   double shortest_edge;
+  /** Largest |r| or |z| of a vertex [length]. */
+  double largest_coordinate;
+  /** Smallest distance between boundary vertices of bodies 0 and 1 at t = 0 [length]. */
+  double closest_boundary_vertices;
+  /** Extent in z of each body [length]. */
+  std::vector<double> body_heights;
 };
 } // namespace dyncontact

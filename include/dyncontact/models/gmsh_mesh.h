@@ -3,61 +3,82 @@
 #include <dyncontact/base/global.h>
 
 #include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
 
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dyncontact
 {
 /**
- * The ids that read_gmsh_mesh() gives an axisymmetric sphere mesh, in the (r, z) plane with
- * x = r. They come from the gmsh physical groups of meshes/sphere.geo and meshes/two_spheres.geo:
- * physical surface b + 1 is body b, physical curve 1 is the axis, physical curve b + 2 is the
- * sphere surface of body b (bodies 0-based here, 1-based in gmsh).
+ * The ids that read_gmsh_mesh() gives an axisymmetric mesh, in the (r, z) plane with x = r, from
+ * its gmsh physical groups: physical surface b + 1 is body b (material id b), physical curve 1 is
+ * the axis, every other physical curve t a boundary curve of one body with boundary id t and, if it
+ * is a circle, manifold id t (bodies 0-based here, 1-based in gmsh). The sphere meshes
+ * (meshes/sphere.geo, two_spheres.geo, ...) have one curve per body, b + 2 for body b.
  */
 namespace SphereMeshIds
 {
 /** Boundary id of the faces on the symmetry axis r = 0 (gmsh physical curve 1). */
 constexpr types::boundary_id axis = 1;
 
-/** Boundary id of the sphere surface of `body` (0-based), equal to its gmsh physical curve tag. */
+/**
+ * Boundary id of the surface of `body` (0-based) in the sphere meshes, its gmsh physical curve
+ * tag b + 2; also the manifold id of its SphericalManifold.
+ */
 constexpr types::boundary_id surface(const unsigned int body)
 {
   return body + 2;
 }
 
 /**
- * Manifold id of the SphericalManifold on the surface faces of `body`: the same number as the
- * boundary id of that surface.
- */
-constexpr types::manifold_id surface_manifold(const unsigned int body)
-{
-  return body + 2;
-}
-
-/**
  * Manifold id of the TransfiniteInterpolationManifold on every cell and interior face of every
- * body; it blends the curved surface into the interior on refinement and for higher-order
- * mappings. The axis faces are flat (numbers::flat_manifold_id).
+ * body; it blends the curved boundaries into the interior on refinement and for higher-order
+ * mappings. The axis faces and straight boundary curves are flat (numbers::flat_manifold_id).
  */
 constexpr types::manifold_id interior_manifold = 0;
 } // namespace SphereMeshIds
 
-/** Where one body's sphere sits in the (r, z) plane, as measured from its mesh. */
+/** A circle centred on the axis in the (r, z) plane, as measured from a mesh: a sphere. */
 struct SphereGeometry
 {
-  /** The centre, on the axis: (0, z_c). */
+  /** The centre, on the axis: (0, z_c) [length]. */
   Point<2> centre;
 
   /** The radius [length]. */
   double radius;
 };
 
+/** A physical curve of the boundary other than the axis, as read_gmsh_mesh() found it. */
+struct BoundaryCurve
+{
+  types::boundary_id id; ///< the gmsh physical curve tag (>= 2), also its boundary id
+  unsigned int body;     ///< 0-based body whose cells it bounds
+  std::optional<SphereGeometry> circle; ///< set if it is an arc of a circle centred on the axis
+  /// set if it is straight: a point on it [length] and its unit normal pointing out of the body
+  std::optional<std::pair<Point<2>, Tensor<1, 2>>> line;
+};
+
+/** What read_gmsh_mesh() found: the bodies and their boundary curves. */
+struct MeshGeometry
+{
+  unsigned int n_bodies = 0;         ///< number of bodies (physical surfaces)
+  std::vector<BoundaryCurve> curves; ///< sorted by id
+
+  /** The curve with boundary id `id`, or nullptr. */
+  const BoundaryCurve* curve(types::boundary_id id) const;
+
+  /** Body b's sphere if its boundary other than the axis is one circular curve, else empty. */
+  std::optional<SphereGeometry> sphere(unsigned int body) const;
+};
+
 /**
- * Reads an axisymmetric mesh of one or more spheres, all quadrilaterals, into `triangulation`
- * (which must be empty) and returns each body's sphere, indexed by body.
+ * Reads an axisymmetric mesh of one or more bodies, all quadrilaterals, into `triangulation`
+ * (which must be empty) and returns its bodies and boundary curves.
  *
  * A `.geo` file is meshed in 2D by the gmsh library (linear quadrilaterals: deal.II's Q2 mapping
  * with the attached manifolds supplies the curvature) after its parameters are set: every key of
@@ -72,24 +93,35 @@ struct SphereGeometry
  * it meanwhile; every MPI rank may call this function, each meshes on its own (gmsh is
  * deterministic, so all get the same mesh).
  *
- * With bodies b = 0, 1, ... the mesh must lie in r = x >= 0 and carry the physical groups of
- * meshes/sphere.geo: physical surface b + 1 holds the cells of body b (they get material id b),
- * physical curve 1 the faces on the axis r = 0, physical curve b + 2 the surface of body b,
- * which must be a circle centred on the axis (its centre and radius are fitted to the surface
- * vertices and returned). Every boundary face belongs to one of these curves. Boundary and
- * manifold ids are those of SphereMeshIds: a SphericalManifold about each sphere's centre on its
- * surface faces, flat axis faces, a TransfiniteInterpolationManifold on the cells.
+ * The mesh must lie in r = x >= 0 and carry these physical groups (see meshes/README.md):
+ *  - physical surface b + 1 holds the cells of body b = 0, 1, ... (they get material id b), the
+ *    surfaces numbered 1, ..., n without gaps;
+ *  - physical curve 1 holds the faces on the axis r = 0 (boundary id 1, flat); it is needed only
+ *    if some boundary face lies on r = 0 (a ring has no axis), and then every such face is in it;
+ *  - every other physical curve t >= 2 is a boundary curve of the cells of one body (boundary id
+ *    t; a body may have several). From its vertices it is either a circle centred on the axis
+ *    (its centre and radius fitted by least squares, every vertex within 1e-6 R of it; it gets a
+ *    SphericalManifold about that centre, manifold id t) or a straight line (every vertex within
+ *    1e-6 of the curve's length from the best-fit line; flat faces). The line test comes first: a
+ *    straight segment, however short, is never taken for a circle, and only an arc that bends
+ *    by more than the line tolerance can be one.
+ * Every boundary face belongs to one of these curves. The cells and interior faces get a
+ * TransfiniteInterpolationManifold (SphereMeshIds::interior_manifold). The sphere meshes have one
+ * circle per body, curve b + 2 (SphereMeshIds::surface()), whose manifold id is thus b + 2.
  *
- * It is not a general mesh reader: meshes with triangles or other non-quadrilateral cells,
- * without these physical groups, or with other boundaries are rejected. Any problem with the file
- * throws InputError naming the file (a missing or unreadable file, an unknown extension or
- * parameter, gmsh's or deal.II's complaint about its content condensed into one line, no cells,
- * non-quadrilateral cells with their gmsh element types, a missing or unexpected physical group, a
- * surface that is not a sphere on the axis); the triangulation is then left empty.
+ * It is not a general mesh reader: meshes with triangles or other non-quadrilateral cells or with
+ * boundaries of other shapes are rejected. Any problem with the file throws InputError, one line
+ * naming the file: a missing or unreadable file, an unknown extension or parameter, gmsh's or
+ * deal.II's complaint about its content condensed into one line, no cells, non-quadrilateral
+ * cells with their gmsh element types, cells in no physical surface or surfaces with gaps, a
+ * vertex at r < 0, boundary faces in no physical curve, axis faces off r = 0, faces on r = 0
+ * outside physical curve 1 (or curve 1 missing), a curve bounding cells of more than one body,
+ * a curve that is neither a circle centred on the axis nor a straight line. The triangulation is
+ * then left empty.
  */
-std::vector<SphereGeometry> read_gmsh_mesh(const std::string& filename,
-                                           const std::map<std::string, double>& geo_parameters,
-                                           Triangulation<2>& triangulation);
+MeshGeometry read_gmsh_mesh(const std::string& filename,
+                            const std::map<std::string, double>& geo_parameters,
+                            Triangulation<2>& triangulation);
 
 /**
  * The names of the parameters that the `.geo` file `geo_file` declares for setting from outside
