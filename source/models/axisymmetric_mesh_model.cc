@@ -1,6 +1,9 @@
 #include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/reference/impact_measures.h>
 
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
@@ -59,6 +62,19 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
   body_heights.clear();
   for (unsigned int body = 0; body < n_bodies(); ++body)
     body_heights.push_back(highest_z[body] - lowest_z[body]);
+  // Volumes of revolution, 2 pi r over each cell in the Q2 mapping of the manifolds.
+  const MappingQ<2> mapping(2);
+  const FE_Q<2> linear(1);
+  FEValues<2> cell_values(
+      mapping, linear, QGauss<2>(4), update_quadrature_points | update_JxW_values);
+  body_volumes.assign(n_bodies(), 0.);
+  for (const auto& cell : triangulation.active_cell_iterators())
+  {
+    cell_values.reinit(cell);
+    for (const unsigned int q : cell_values.quadrature_point_indices())
+      body_volumes[cell->material_id()] +=
+          2. * numbers::PI * cell_values.quadrature_point(q)[0] * cell_values.JxW(q);
+  }
   closest_boundary_vertices = std::numeric_limits<double>::max();
   if (n_bodies() == 2)
     for (const Point<2>& vertex_0 : boundary_vertices[0])
@@ -123,12 +139,7 @@ Tensor<1, 2> AxisymmetricMeshModel::initial_velocity(const types::material_id bo
 
 ContactDescription<2> AxisymmetricMeshModel::contact_description(const NodeIndex<2>&) const
 {
-  std::vector<ContactPairParameters> pairs = declared_pairs;
-  if (pairs.empty() && n_bodies() == 2)
-    pairs.push_back({SphereMeshIds::surface(0),
-                     SphereMeshIds::surface(1),
-                     std::nullopt,
-                     "Mesh/file = '" + mesh.file + "'"});
+  const std::vector<ContactPairParameters> pairs = effective_pairs();
   if (pairs.empty() && n_bodies() > 2)
     throw InputError("Bodies/number of bodies = " + std::to_string(n_bodies()) +
                      ": with more than two bodies the contact pairs must be declared "
@@ -141,6 +152,14 @@ ContactDescription<2> AxisymmetricMeshModel::contact_description(const NodeIndex
   {
     const std::string source =
         declared_pairs.empty() ? pair.source : pair.source + " (Mesh/file = '" + mesh.file + "')";
+    const BoundaryCurve* slave = geometry.curve(pair.slave_boundary);
+    const BoundaryCurve* master =
+        pair.master_boundary ? geometry.curve(*pair.master_boundary) : nullptr;
+    if (slave != nullptr && master != nullptr && slave->body == master->body)
+      throw InputError(source + ": slave boundary " + std::to_string(pair.slave_boundary) +
+                       " and master boundary " + std::to_string(*pair.master_boundary) +
+                       " are both on body " + std::to_string(slave->body + 1) +
+                       "; contact of a body with itself is not implemented.");
     if (pair.master_boundary)
       // Facing nodes of mirrored meshes coincide in r to round-off of the mesh generator.
       description.surface_pairs.push_back({pair.slave_boundary,
@@ -213,30 +232,118 @@ Tensor<1, 2> AxisymmetricMeshModel::impact_direction() const
   return axial;
 }
 
-std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
+std::vector<ContactPairParameters> AxisymmetricMeshModel::effective_pairs() const
 {
-  const std::optional<SphereGeometry> sphere_0 = geometry.sphere(0), sphere_1 = geometry.sphere(1);
-  if (n_bodies() != 2 || !sphere_0 || !sphere_1)
+  if (!declared_pairs.empty() || n_bodies() != 2)
+    return declared_pairs;
+  return {{SphereMeshIds::surface(0),
+           SphereMeshIds::surface(1),
+           std::nullopt,
+           "Mesh/file = '" + mesh.file + "'"}};
+}
+
+std::optional<AxisymmetricMeshModel::ImpactSide>
+AxisymmetricMeshModel::impact_side(const types::boundary_id id) const
+{
+  const BoundaryCurve* curve = geometry.curve(id);
+  if (curve == nullptr)
     return std::nullopt;
-  const SphereGeometry spheres[2] = {*sphere_0, *sphere_1};
-  const BodyParameters &lower = bodies.bodies[0], &upper = bodies.bodies[1];
-  const double distance = spheres[1].centre[1] - spheres[0].centre[1];
+  if (curve->circle && geometry.sphere(curve->body))
+    return ImpactSide{curve->circle, 0., curve->body};
+  if (curve->line && std::abs(std::abs(curve->line->second[1]) - 1.) <= 1e-12)
+    return ImpactSide{std::nullopt, curve->line->first[1], curve->body};
+  return std::nullopt;
+}
+
+std::optional<AxisymmetricMeshModel::HeadOnImpact> AxisymmetricMeshModel::head_on_impact() const
+{
+  const std::vector<ContactPairParameters> pairs = effective_pairs();
+  if (pairs.size() != 1)
+    return std::nullopt;
+  const ContactPairParameters& pair = pairs.front();
+  std::optional<ImpactSide> first   = impact_side(pair.slave_boundary), second;
+  if (pair.master_boundary)
+    second = impact_side(*pair.master_boundary);
+  else if (std::abs(std::abs(pair.rigid_plane->second[1]) - 1.) <= 1e-12)
+    second = ImpactSide{std::nullopt, pair.rigid_plane->first[1], std::nullopt};
+  if (!first || !second)
+    return std::nullopt;
+  if (!first->sphere)
+    std::swap(first, second);
+  if (!first->sphere)
+    return std::nullopt;
+  const Point<2>& centre = first->sphere->centre;
+  // The other side's position and velocity along the axis: its centre, or its flat surface.
+  const double other_z = second->sphere ? second->sphere->centre[1] : second->surface_z;
+  const double velocity_of_other =
+      second->body ? bodies.bodies[*second->body].initial_velocity->value(
+                         second->sphere ? second->sphere->centre : Point<2>(0., other_z), 1)
+                   : 0.;
+  const double direction = other_z > centre[1] ? 1. : -1.;
   const double approach_speed =
-      (distance > 0. ? 1. : -1.) * (lower.initial_velocity->value(spheres[0].centre, 1) -
-                                    upper.initial_velocity->value(spheres[1].centre, 1));
-  // Spheres touching at t = 0 to the tolerance have gap zero: Hertz's impact starts at once.
-  const double gap = std::abs(distance) - spheres[0].radius - spheres[1].radius;
+      direction *
+      (bodies.bodies[*first->body].initial_velocity->value(centre, 1) - velocity_of_other);
+  // Bodies touching at t = 0 to the tolerance have gap zero: the impact starts at once.
+  double gap = std::abs(other_z - centre[1]) - first->sphere->radius -
+               (second->sphere ? second->sphere->radius : 0.);
   if (approach_speed <= 0. || gap < -touching_tolerance())
     return std::nullopt;
-  const auto sphere = [&](const unsigned int b)
+  if (gap <= touching_tolerance())
+    gap = 0.;
+  return HeadOnImpact{*first, *second, approach_speed, gap};
+}
+
+ElasticSphere AxisymmetricMeshModel::elastic_sphere(const unsigned int body,
+                                                    const SphereGeometry& sphere) const
+{
+  const BodyParameters& parameters = bodies.bodies[body];
+  return {sphere.radius, parameters.youngs_modulus, parameters.poissons_ratio, parameters.density};
+}
+
+std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
+{
+  const std::optional<HeadOnImpact> impact = head_on_impact();
+  if (!impact)
+    return std::nullopt;
+  const ElasticSphere sphere = elastic_sphere(*impact->sphere.body, *impact->sphere.sphere);
+  const double touch         = impact->gap / impact->approach_speed;
+  if (impact->other.sphere)
+    return HertzImpact::two_spheres(sphere,
+                                    elastic_sphere(*impact->other.body, *impact->other.sphere),
+                                    impact->approach_speed,
+                                    touch);
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  ElasticFlatBody flat{infinity, 0., infinity}; // the rigid plane
+  if (impact->other.body)
   {
-    const BodyParameters& body = bodies.bodies[b];
-    return ElasticSphere{spheres[b].radius, body.youngs_modulus, body.poissons_ratio, body.density};
-  };
-  return HertzImpact::two_spheres(sphere(0),
-                                  sphere(1),
-                                  approach_speed,
-                                  gap <= touching_tolerance() ? 0. : gap / approach_speed);
+    const BodyParameters& body = bodies.bodies[*impact->other.body];
+    flat                       = {
+                              body.youngs_modulus, body.poissons_ratio, body.density * body_volumes[*impact->other.body]};
+  }
+  return HertzImpact::sphere_on_flat(sphere, flat, impact->approach_speed, touch);
+}
+
+std::optional<FiniteSphereImpact> AxisymmetricMeshModel::finite_sphere_reference() const
+{
+  const std::optional<HeadOnImpact> impact = head_on_impact();
+  if (!impact || (!impact->other.sphere && impact->other.body))
+    return std::nullopt;
+  const ElasticSphere sphere = elastic_sphere(*impact->sphere.body, *impact->sphere.sphere);
+  const double touch         = impact->gap / impact->approach_speed;
+  // The law's C0 is known for nu = 0.3 only (FiniteSphereImpact): no reference otherwise.
+  try
+  {
+    if (impact->other.sphere)
+      return FiniteSphereImpact(sphere,
+                                elastic_sphere(*impact->other.body, *impact->other.sphere),
+                                impact->approach_speed,
+                                touch);
+    return FiniteSphereImpact(sphere, sphere, 2. * impact->approach_speed, touch);
+  }
+  catch (const std::exception&)
+  {
+    return std::nullopt;
+  }
 }
 
 void AxisymmetricMeshModel::write_reference(const std::string& directory,
@@ -247,7 +354,7 @@ void AxisymmetricMeshModel::write_reference(const std::string& directory,
   if (!hertz)
     return;
   std::ofstream file(directory + "/hertz.csv");
-  file << "# Hertz's quasi-static impact of two spheres: R* = " << hertz->effective_radius()
+  file << "# Hertz's quasi-static impact: R* = " << hertz->effective_radius()
        << ", E* = " << hertz->effective_modulus() << ", m* = " << hertz->effective_mass()
        << ", v = " << hertz->relative_approach_speed()
        << ", first touch t0 = " << hertz->first_touch_time() << "; peak force "
@@ -256,6 +363,22 @@ void AxisymmetricMeshModel::write_reference(const std::string& directory,
   file << "time,contact_force,approach\n" << std::setprecision(15);
   for (const double time : times)
     file << time << "," << hertz->contact_force(time) << "," << hertz->approach(time) << "\n";
+
+  const auto law = finite_sphere_reference();
+  if (!law)
+    return;
+  // Against the rigid plane the law is that of the mirrored pair, whose approach is twice the
+  // sphere's.
+  const double approach_scale = head_on_impact()->other.sphere ? 1. : 0.5;
+  std::ofstream law_file(directory + "/finite_sphere.csv");
+  law_file << "# Finite-sphere law (doc/method.md section 5, C0 = "
+           << FiniteSphereImpact::c0_for_nu_0_3 << "): peak force " << law->maximum_force()
+           << ", duration " << law->contact_duration() << ", impulse " << law->impulse()
+           << "; approach of the centres as in hertz.csv\n";
+  law_file << "time,contact_force,approach\n" << std::setprecision(15);
+  for (const double time : times)
+    law_file << time << "," << law->contact_force(time) << ","
+             << approach_scale * law->approach(time) << "\n";
 }
 
 void AxisymmetricMeshModel::summarize_run(const std::string& directory,
@@ -270,31 +393,53 @@ void AxisymmetricMeshModel::summarize_run(const std::string& directory,
     log << "  no comparison with Hertz (impact_summary.csv): it needs at least 2 time steps.\n";
     return;
   }
+  const auto law          = finite_sphere_reference();
   const ImpactMeasures fe = measure_impact(history.column("time"), history.column("contact_force"));
   struct Row
   {
     std::string quantity;
-    double computed, reference;
+    double computed, hertz, law;
   };
+  // Both references start at the same first touch t0 and are symmetric about their peak.
+  const double t0             = hertz->first_touch_time();
+  const double law_duration   = law ? law->contact_duration() : 0.;
+  const double nan            = std::numeric_limits<double>::quiet_NaN();
   const std::vector<Row> rows = {
-      {"peak_force", fe.peak_force, hertz->maximum_force()},
-      {"peak_time", fe.peak_time, hertz->first_touch_time() + 0.5 * hertz->contact_duration()},
-      {"contact_start", fe.contact_start, hertz->first_touch_time()},
-      {"contact_end", fe.contact_end, hertz->first_touch_time() + hertz->contact_duration()},
-      {"duration", fe.duration, hertz->contact_duration()},
-      {"impulse", fe.impulse, hertz->impulse()},
-      {"ringing", fe.ringing, 0.}};
+      {"peak_force", fe.peak_force, hertz->maximum_force(), law ? law->maximum_force() : nan},
+      {"peak_time",
+       fe.peak_time,
+       t0 + 0.5 * hertz->contact_duration(),
+       law ? t0 + 0.5 * law_duration : nan},
+      {"contact_start", fe.contact_start, t0, law ? t0 : nan},
+      {"contact_end",
+       fe.contact_end,
+       t0 + hertz->contact_duration(),
+       law ? t0 + law_duration : nan},
+      {"duration", fe.duration, hertz->contact_duration(), law ? law_duration : nan},
+      {"impulse", fe.impulse, hertz->impulse(), law ? law->impulse() : nan},
+      {"ringing", fe.ringing, 0., law ? 0. : nan}};
+  const auto relative = [](const double computed, const double reference)
+  { return reference != 0. ? (computed - reference) / reference : 0.; };
   std::ofstream file(directory + "/impact_summary.csv");
-  file << "quantity,computed,hertz,relative_difference\n" << std::setprecision(12);
-  log << "  impact against Hertz (computed / Hertz / relative difference):\n";
+  file << "quantity,computed,hertz,relative_difference"
+       << (law ? ",finite_sphere,finite_sphere_difference" : "") << "\n"
+       << std::setprecision(12);
+  log << "  impact against Hertz (computed / Hertz / relative difference"
+      << (law ? " / finite-sphere law / relative difference" : "") << "):\n";
   for (const Row& row : rows)
   {
-    const double difference =
-        row.reference != 0. ? (row.computed - row.reference) / row.reference : 0.;
-    file << row.quantity << "," << row.computed << "," << row.reference << "," << difference
-         << "\n";
+    file << row.quantity << "," << row.computed << "," << row.hertz << ","
+         << relative(row.computed, row.hertz);
     log << "    " << std::left << std::setw(14) << row.quantity << std::right << std::setw(14)
-        << row.computed << std::setw(14) << row.reference << std::setw(14) << difference << "\n";
+        << row.computed << std::setw(14) << row.hertz << std::setw(14)
+        << relative(row.computed, row.hertz);
+    if (law)
+    {
+      file << "," << row.law << "," << relative(row.computed, row.law);
+      log << std::setw(14) << row.law << std::setw(14) << relative(row.computed, row.law);
+    }
+    file << "\n";
+    log << "\n";
   }
 }
 

@@ -221,7 +221,7 @@ HertzImpact HertzImpact::sphere_on_flat(const ElasticSphere& sphere,
                                         const double first_touch_time)
 {
   require_valid_sphere(sphere);
-  require_positive(flat.youngs_modulus, "the flat body's Young's modulus");
+  require_positive(flat.youngs_modulus, "the flat body's Young's modulus", true);
   require_poissons_ratio(flat.poissons_ratio);
   require_positive(flat.mass, "the flat body's mass", true);
   return HertzImpact(

@@ -349,8 +349,9 @@ TEST(GeneralMeshes, SphereOnBlock)
 
 TEST(GeneralMeshes, SphereOnBlockModel)
 {
-  // The axisymmetric model on the sphere above the block (the paper's sphere prm with this mesh):
-  // no Hertz reference between two spheres (the block is none), only the sphere printed as one,
+  // The axisymmetric model on the sphere above the block (the paper's sphere prm with this mesh,
+  // whose velocities move the sphere up and the block down, apart): no Hertz reference (the
+  // bodies separate), only the sphere printed as one,
   // and the node-to-segment search radius of bodies that are not both spheres: the gap between
   // the closest boundary vertices, the contact pole (0, 4) and the contact point (0, 0), plus a
   // quarter of the smaller height 2 R = 16.
@@ -554,3 +555,37 @@ TEST(GeneralMeshes, BadParametersGiveOneLine)
   expect_input_error(block_geo, {{"ContactZoneDivisions", 2.5}}, "ContactZoneDivisions = 2.5");
 }
 } // namespace
+
+namespace dyncontact::testing
+{
+// The Hertz reference of prm/sphere_on_block.prm: the sphere (R = 8) on the block's flat top face
+// z = 0, HertzImpact::sphere_on_flat with the block's E, nu and its meshed mass rho V, V = pi
+// 40^2 40 (a cylinder of straight faces: the Q2 volume of revolution is exact to round-off), first
+// touch after the gap 2 at speed 1. No finite-sphere law for an elastic flat body.
+TEST(GeneralMeshes, SphereOnBlockHasHertzsSphereOnFlatReference)
+{
+  const RunParameters parameters =
+      ParameterReader(
+          source_path("prm/sphere_on_block.prm"),
+          {"Mesh/geo parameters=Gap: 2, Refinement: 0, PoleGrading: 10, CoreOffset: 0.3"})
+          .parameters();
+  AxisymmetricMeshModel model(parameters.mesh, parameters.bodies, parameters.contact.pairs);
+  Triangulation<2> triangulation;
+  model.create_triangulation(triangulation);
+  const auto hertz = model.hertz_reference();
+  ASSERT_TRUE(hertz);
+  const ElasticSphere sphere{8., 5e3, 0.3, 1e-3};
+  const double block_mass    = 1e-3 * numbers::PI * 40. * 40. * 40.;
+  const HertzImpact expected = HertzImpact::sphere_on_flat(sphere, {5e3, 0.3, block_mass}, 1., 2.);
+  std::cout << "  sphere on block: R* " << hertz->effective_radius() << ", E* "
+            << hertz->effective_modulus() << ", m* " << hertz->effective_mass() << " (expected "
+            << expected.effective_mass() << "), peak " << hertz->maximum_force() << std::endl;
+  EXPECT_DOUBLE_EQ(hertz->effective_radius(), 8.);
+  EXPECT_NEAR(hertz->effective_modulus(), 5e3 / (2. * (1. - 0.09)), 1e-9);
+  EXPECT_NEAR(
+      hertz->effective_mass(), expected.effective_mass(), 1e-12 * expected.effective_mass());
+  EXPECT_NEAR(hertz->first_touch_time(), 2., 1e-12);
+  EXPECT_NEAR(hertz->maximum_force(), expected.maximum_force(), 1e-9 * expected.maximum_force());
+  EXPECT_FALSE(model.finite_sphere_reference());
+}
+} // namespace dyncontact::testing

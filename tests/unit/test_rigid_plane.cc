@@ -2,6 +2,10 @@
 // the plane is the lower half of two identical spheres striking each other, whose symmetry plane
 // is rigid and frictionless; the two runs must agree to round-off.
 #include <dyncontact/base/global.h>
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/models/axisymmetric_mesh_model.h>
+
+#include <deal.II/grid/tria.h>
 
 #include <algorithm>
 #include <cmath>
@@ -78,5 +82,48 @@ TEST(RigidPlane, MisplacedPlanesAreInputErrors)
   const std::string away = message_of("0, 0; 0, 1");
   EXPECT_NE(away.find("lies 18 behind the rigid plane"), std::string::npos) << away;
   EXPECT_NE(away.find("which must point toward the body"), std::string::npos) << away;
+}
+} // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+// The references of the sphere on the rigid plane are those of its mirrored pair: Hertz's sphere
+// on a rigid flat (E and mass infinite: R* = R, E* = E / (1 - nu^2), m* = m) has the two spheres'
+// force history (R* = R / 2, E* = E / (2 (1 - nu^2)), m* = m / 2 at twice the speed), and so has
+// the finite-sphere law, whose approach is the pair's halved.
+TEST(RigidPlane, ReferencesAreThoseOfTheMirroredPair)
+{
+  const std::string coarse  = "Refinement: 0, PoleGrading: 10, CoreOffset: 0.3";
+  const RunParameters plane = ParameterReader(source_path("prm/sphere_on_rigid_plane.prm"),
+                                              {"Mesh/geo parameters=CentreZ: -10, " + coarse})
+                                  .parameters();
+  const RunParameters pair =
+      ParameterReader(source_path("prm/spheres_rho0.001.prm"), {"Mesh/geo parameters=" + coarse})
+          .parameters();
+  AxisymmetricMeshModel plane_model(plane.mesh, plane.bodies, plane.contact.pairs);
+  AxisymmetricMeshModel pair_model(pair.mesh, pair.bodies, pair.contact.pairs);
+  Triangulation<2> plane_mesh, pair_mesh;
+  plane_model.create_triangulation(plane_mesh);
+  pair_model.create_triangulation(pair_mesh);
+  const auto plane_hertz = plane_model.hertz_reference(), pair_hertz = pair_model.hertz_reference();
+  const auto plane_law = plane_model.finite_sphere_reference();
+  const auto pair_law  = pair_model.finite_sphere_reference();
+  ASSERT_TRUE(plane_hertz && pair_hertz && plane_law && pair_law);
+  std::cout << "  Hertz peak " << plane_hertz->maximum_force() << " vs "
+            << pair_hertz->maximum_force() << ", law peak " << plane_law->maximum_force() << " vs "
+            << pair_law->maximum_force() << std::endl;
+  // Round-off of the different effective quantities: 1e-12.
+  EXPECT_NEAR(plane_hertz->maximum_force(),
+              pair_hertz->maximum_force(),
+              1e-12 * pair_hertz->maximum_force());
+  EXPECT_NEAR(plane_hertz->contact_duration(),
+              pair_hertz->contact_duration(),
+              1e-12 * pair_hertz->contact_duration());
+  EXPECT_NEAR(plane_hertz->first_touch_time(), 2., 1e-12);
+  EXPECT_NEAR(
+      plane_law->maximum_force(), pair_law->maximum_force(), 1e-12 * pair_law->maximum_force());
+  EXPECT_NEAR(plane_law->contact_duration(),
+              pair_law->contact_duration(),
+              1e-12 * pair_law->contact_duration());
 }
 } // namespace dyncontact::testing

@@ -3,6 +3,7 @@
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/models/gmsh_mesh.h>
 #include <dyncontact/models/problem_model.h>
+#include <dyncontact/reference/finite_sphere_impact.h>
 #include <dyncontact/reference/hertz_impact.h>
 
 #include <optional>
@@ -56,7 +57,8 @@ public:
   Tensor<1, 2> impact_direction() const override;
   /**
    * Writes hertz.csv (time, contact_force, approach of Hertz's theory at `times`) if the problem
-   * is a Hertz impact, see hertz_reference().
+   * is a Hertz impact, see hertz_reference(), and finite_sphere.csv (the same columns) if the
+   * finite-sphere law applies, see finite_sphere_reference().
    */
   void write_reference(const std::string& directory,
                        const std::vector<double>& times,
@@ -64,24 +66,66 @@ public:
   /**
    * For a Hertz impact: measures the contact force history (measure_impact()) and writes
    * impact_summary.csv, the peak force, its time, contact start, end and duration, impulse and
-   * ringing next to Hertz's values and the relative differences. A run of one step has nothing
-   * to measure: it writes nothing and says so.
+   * ringing next to Hertz's values and the relative differences, and, where the finite-sphere law
+   * applies, its values and the differences from it (columns finite_sphere,
+   * finite_sphere_difference). A run of one step has nothing to measure: it writes nothing and
+   * says so.
    */
   void summarize_run(const std::string& directory,
                      const History& history,
                      std::ostream& log) const override;
   /**
-   * Hertz's theory of this impact if it applies: two spheres (any radii and material constants,
-   * HertzImpact::two_spheres from R*, E*, m*) whose centres approach along the axis with the
-   * initial velocities given (evaluated at the centres); first touch at (distance of the centres -
-   * R1 - R2) / approach speed, at t = 0 if they touch to touching_tolerance(). Empty otherwise
-   * (one body, a body that is not a sphere (MeshGeometry::sphere()), overlapping spheres, spheres
-   * not approaching). Valid after create_triangulation().
+   * Hertz's theory of this impact if it applies: one contact pair (declared, or the default of
+   * two bodies) between a full sphere (MeshGeometry::sphere()) and another full sphere
+   * (HertzImpact::two_spheres, any radii and material constants), or a flat boundary
+   * perpendicular to the axis of an elastic body (HertzImpact::sphere_on_flat with that body's E,
+   * nu and mass rho V, V its meshed volume of revolution), or a rigid plane perpendicular to the
+   * axis (E and mass infinite); the bodies approach along the axis with the initial velocities
+   * given (evaluated at the sphere's centre, at the flat surface's point on the axis); first touch
+   * at gap / approach speed, at t = 0 if they touch to touching_tolerance(). Empty otherwise
+   * (several pairs, other shapes, overlapping or separating bodies). Valid after
+   * create_triangulation().
    */
   std::optional<HertzImpact> hertz_reference() const;
+  /**
+   * The finite-sphere law (FiniteSphereImpact, doc/method.md section 5) for the impacts of
+   * hertz_reference() that it covers: two spheres, and a sphere on the rigid plane (the mirrored
+   * pair: the same sphere twice at twice the speed). Empty for a sphere on an elastic flat body
+   * (a half-space has no finite-size term and the law is not derived for it), where Hertz does
+   * not apply, and where the law does not (a Poisson's ratio other than 0.3, whose C0 is unknown,
+   * or an impact beyond the law's range: FiniteSphereImpact's constructor throws).
+   */
+  std::optional<FiniteSphereImpact> finite_sphere_reference() const;
   void print_summary(std::ostream& out, double time_step) const override;
 
 private:
+  /**
+   * One side of a head-on impact along the axis (hertz_reference()): a full sphere, or a flat
+   * surface perpendicular to the axis at z = surface_z of an elastic body or of the rigid plane
+   * (no body).
+   */
+  struct ImpactSide
+  {
+    std::optional<SphereGeometry> sphere;
+    double surface_z;
+    std::optional<unsigned int> body;
+  };
+  /** The contact pairs in force: the declared ones, or the default of contact_description(). */
+  std::vector<ContactPairParameters> effective_pairs() const;
+  /** The side of an impact that boundary `id` is, if it is one; see ImpactSide. */
+  std::optional<ImpactSide> impact_side(types::boundary_id id) const;
+  /**
+   * The two sides of the one contact pair, the first a sphere, with their approach speed along
+   * the axis and gap at t = 0 (0 if touching); empty where hertz_reference() is.
+   */
+  struct HeadOnImpact
+  {
+    ImpactSide sphere, other;
+    double approach_speed, gap;
+  };
+  std::optional<HeadOnImpact> head_on_impact() const;
+  /** The ElasticSphere of body b with the sphere `geometry`. */
+  ElasticSphere elastic_sphere(unsigned int body, const SphereGeometry& geometry) const;
   /**
    * How close surfaces count as touching at t = 0: 1e-9 of the shortest cell edge, and at least
    * the round-off of the positions (8 units in the last place of the largest |coordinate| of a
@@ -111,5 +155,7 @@ private:
   double closest_boundary_vertices;
   /** Extent in z of each body [length]. */
   std::vector<double> body_heights;
+  /** Volume of revolution of each body's mesh (Q2 mapping) [length^3]. */
+  std::vector<double> body_volumes;
 };
 } // namespace dyncontact

@@ -12,7 +12,7 @@ namespace dyncontact
  */
 struct ElasticFlatBody
 {
-  /// Young's modulus E (> 0).
+  /// Young's modulus E (> 0; std::numeric_limits<double>::infinity() for a rigid body).
   double youngs_modulus;
   /// Poisson's ratio nu (-1 < nu <= 0.5).
   double poissons_ratio;
