@@ -220,8 +220,8 @@ std::vector<Node<2>> AxisymmetricMeshModel::monitor_nodes(const NodeIndex<2>& no
 std::vector<SurfaceTraction<2>> AxisymmetricMeshModel::surface_tractions() const
 {
   std::vector<SurfaceTraction<2>> tractions;
-  for (unsigned int body = 0; body < n_bodies(); ++body)
-    tractions.push_back({SphereMeshIds::surface(body), bodies.bodies[body].surface_traction});
+  for (const BoundaryCurve& curve : geometry.curves)
+    tractions.push_back({curve.id, bodies.bodies[curve.body].surface_traction});
   return tractions;
 }
 

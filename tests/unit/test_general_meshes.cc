@@ -589,3 +589,27 @@ TEST(GeneralMeshes, SphereOnBlockHasHertzsSphereOnFlatReference)
   EXPECT_FALSE(model.finite_sphere_reference());
 }
 } // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+// A body's surface traction acts on its whole boundary except the axis: on the block of
+// prm/sphere_on_block.prm (curves 3, 4, 5: top, side, bottom) a uniform T_z = 1 gives the block
+// the momentum rate of its boundary area, top and bottom pi 40^2 each, side 2 pi 40 40 (straight
+// faces: the Q2 integration is exact to round-off), over 10 steps of the trapezoidal rule, which
+// integrates a constant force exactly.
+TEST(GeneralMeshes, SurfaceTractionActsOnEveryCurveOfTheBody)
+{
+  const MeshRun run =
+      run_mesh_case("prm/sphere_on_block.prm",
+                    {"Mesh/geo parameters=Gap: 2, Refinement: 0, PoleGrading: 10, CoreOffset: 0.3",
+                     "Time integration/end time=0.025",
+                     "Bodies/Body 1/Initial velocity/Function expression=0; 0",
+                     "Bodies/Body 2/Surface traction/Function expression=0; 1"});
+  const double area     = 2. * numbers::PI * 40. * 40. + 2. * numbers::PI * 40. * 40.;
+  const double t_end    = run.history().column("time").back();
+  const double momentum = run.history().column("momentum_2").back();
+  std::cout << "  block momentum " << momentum << ", area x t " << area * t_end << std::endl;
+  EXPECT_NEAR(momentum, area * t_end, 1e-10 * area * t_end);
+  EXPECT_EQ(run.history().column("momentum_1").back(), 0.);
+}
+} // namespace dyncontact::testing

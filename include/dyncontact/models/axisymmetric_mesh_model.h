@@ -52,7 +52,11 @@ public:
   ContactDescription<2> contact_description(const NodeIndex<2>& nodes) const override;
   std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
   std::vector<Node<2>> monitor_nodes(const NodeIndex<2>& nodes) const override;
-  /** Body b's `Surface traction` on its surface (boundary id SphereMeshIds::surface(b)). */
+  /**
+   * Body b's `Surface traction` on its whole boundary except the axis: every boundary curve of the
+   * body (for the sphere meshes the one curve SphereMeshIds::surface(b)). Valid after
+   * create_triangulation().
+   */
   std::vector<SurfaceTraction<2>> surface_tractions() const override;
   Tensor<1, 2> impact_direction() const override;
   /**
