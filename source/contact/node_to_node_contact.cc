@@ -126,13 +126,7 @@ template <int dim>
 std::vector<types::global_dof_index>
 NodeToNodeContact<dim>::coupled_dofs(const unsigned int k) const
 {
-  std::vector<types::global_dof_index> dofs;
-  candidate_pairs[k].for_each_node(
-      [&](const Node<dim>& node, double)
-      { dofs.insert(dofs.end(), node.dofs.begin(), node.dofs.end()); });
-  std::sort(dofs.begin(), dofs.end());
-  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-  return dofs;
+  return candidate_pairs[k].dofs();
 }
 
 template class NodeToNodeContact<1>;

@@ -1,6 +1,5 @@
 #include <dyncontact/contact/rigid_plane_contact.h>
 
-#include <algorithm>
 #include <sstream>
 
 namespace dyncontact
@@ -46,10 +45,7 @@ template <int dim>
 std::vector<types::global_dof_index>
 RigidPlaneContact<dim>::coupled_dofs(const unsigned int k) const
 {
-  const auto& dofs = candidate_pairs[k].slave.dofs;
-  std::vector<types::global_dof_index> sorted(dofs.begin(), dofs.end());
-  std::sort(sorted.begin(), sorted.end());
-  return sorted;
+  return candidate_pairs[k].dofs();
 }
 
 template <int dim>

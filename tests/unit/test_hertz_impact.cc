@@ -35,8 +35,8 @@ HertzImpact identical_impact(const ElasticSphere& sphere, const double speed)
   return HertzImpact::two_spheres(sphere, sphere, speed, 0.0);
 }
 
-using dyncontact::testing::OdeState;
 using dyncontact::testing::half_impulses;
+using dyncontact::testing::OdeState;
 using dyncontact::testing::simpson;
 
 /**

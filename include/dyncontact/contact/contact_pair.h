@@ -7,6 +7,7 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <vector>
 
 namespace dyncontact
@@ -58,6 +59,17 @@ struct ContactPair
   double penalty_stiffness; ///< used by the penalty formulation only
 
   bool against_wall() const { return masters.empty(); }
+
+  /** The DoFs of the pair's nodes (slave and masters), sorted and unique. */
+  std::vector<types::global_dof_index> dofs() const
+  {
+    std::vector<types::global_dof_index> pair_dofs;
+    for_each_node([&](const Node<dim>& node, double)
+                  { pair_dofs.insert(pair_dofs.end(), node.dofs.begin(), node.dofs.end()); });
+    std::sort(pair_dofs.begin(), pair_dofs.end());
+    pair_dofs.erase(std::unique(pair_dofs.begin(), pair_dofs.end()), pair_dofs.end());
+    return pair_dofs;
+  }
 
   /** Calls f(node, c) for the slave node (c = -1) and then each master node (c = its weight). */
   template <typename Function>
