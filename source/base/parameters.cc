@@ -687,6 +687,15 @@ void NewtonParameters::declare_parameters(ParameterHandler& prm)
       "pair open to it, and, with active pairs, after at least one linear solve "
       "[-], 1e-16..1e-6. Looser values are rejected: they leave residuals at the "
       "contact nodes that break the momentum balance (1e-6 relative) of a step.");
+  prm.declare_entry(
+      "direct solver",
+      "klu",
+      Patterns::Selection(direct_solver_names().selection()),
+      "Sparse direct solver of the Newton iterations; a factorization is reused while the "
+      "matrix does not change. klu: Amesos KLU, any number of MPI ranks (the matrix is gathered "
+      "to one), results identical run to run. umfpack: UMFPACK, one rank only. mumps: Amesos "
+      "MUMPS, distributed; on several ranks its results may differ in the last digits from run "
+      "to run.");
   prm.leave_subsection();
 }
 
@@ -695,6 +704,7 @@ void NewtonParameters::parse_parameters(ParameterHandler& prm)
   prm.enter_subsection("Newton");
   max_iterations     = prm.get_integer("maximum iterations");
   residual_tolerance = get_in_range(prm, "residual tolerance", "Newton", 1e-16, 1e-6);
+  direct_solver = direct_solver_names().parse(prm.get("direct solver"), "Newton/direct solver");
   prm.leave_subsection();
 }
 

@@ -300,6 +300,15 @@ ElasticSphere AxisymmetricMeshModel::elastic_sphere(const unsigned int body,
   return {sphere.radius, parameters.youngs_modulus, parameters.poissons_ratio, parameters.density};
 }
 
+ElasticFlatBody AxisymmetricMeshModel::flat_body(const ImpactSide& side) const
+{
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  if (!side.body)
+    return {infinity, 0., infinity}; // the rigid plane
+  const BodyParameters& body = bodies.bodies[*side.body];
+  return {body.youngs_modulus, body.poissons_ratio, body.density * body_volumes[*side.body]};
+}
+
 std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
 {
   const std::optional<HeadOnImpact> impact = head_on_impact();
@@ -312,21 +321,14 @@ std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
                                     elastic_sphere(*impact->other.body, *impact->other.sphere),
                                     impact->approach_speed,
                                     touch);
-  constexpr double infinity = std::numeric_limits<double>::infinity();
-  ElasticFlatBody flat{infinity, 0., infinity}; // the rigid plane
-  if (impact->other.body)
-  {
-    const BodyParameters& body = bodies.bodies[*impact->other.body];
-    flat                       = {
-                              body.youngs_modulus, body.poissons_ratio, body.density * body_volumes[*impact->other.body]};
-  }
-  return HertzImpact::sphere_on_flat(sphere, flat, impact->approach_speed, touch);
+  return HertzImpact::sphere_on_flat(
+      sphere, flat_body(impact->other), impact->approach_speed, touch);
 }
 
 std::optional<FiniteSphereImpact> AxisymmetricMeshModel::finite_sphere_reference() const
 {
   const std::optional<HeadOnImpact> impact = head_on_impact();
-  if (!impact || (!impact->other.sphere && impact->other.body))
+  if (!impact)
     return std::nullopt;
   const ElasticSphere sphere = elastic_sphere(*impact->sphere.body, *impact->sphere.sphere);
   const double touch         = impact->gap / impact->approach_speed;
@@ -338,6 +340,9 @@ std::optional<FiniteSphereImpact> AxisymmetricMeshModel::finite_sphere_reference
                                 elastic_sphere(*impact->other.body, *impact->other.sphere),
                                 impact->approach_speed,
                                 touch);
+    if (impact->other.body)
+      return FiniteSphereImpact::sphere_on_flat(
+          sphere, flat_body(impact->other), impact->approach_speed, touch);
     return FiniteSphereImpact(sphere, sphere, 2. * impact->approach_speed, touch);
   }
   catch (const std::exception&)

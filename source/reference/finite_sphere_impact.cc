@@ -1,6 +1,7 @@
 #include <dyncontact/reference/finite_sphere_impact.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -79,21 +80,41 @@ FiniteSphereImpact::FiniteSphereImpact(const ElasticSphere& first,
                                        const double first_touch_time,
                                        const std::optional<double> first_c0,
                                        const std::optional<double> second_c0)
-    : hertz_impact(
-          HertzImpact::two_spheres(first, second, relative_approach_speed, first_touch_time)),
-      log_slope(0.0)
+    : FiniteSphereImpact(
+          HertzImpact::two_spheres(first, second, relative_approach_speed, first_touch_time),
+          {{&first, &second}},
+          {{first_c0, second_c0}})
 {
-  const ElasticSphere* spheres[2]          = {&first, &second};
-  const std::optional<double>* c0_given[2] = {&first_c0, &second_c0};
+}
+
+FiniteSphereImpact FiniteSphereImpact::sphere_on_flat(const ElasticSphere& sphere,
+                                                      const ElasticFlatBody& flat,
+                                                      const double relative_approach_speed,
+                                                      const double first_touch_time,
+                                                      const std::optional<double> c0)
+{
+  return FiniteSphereImpact(
+      HertzImpact::sphere_on_flat(sphere, flat, relative_approach_speed, first_touch_time),
+      {{&sphere, nullptr}},
+      {{c0, std::nullopt}});
+}
+
+FiniteSphereImpact::FiniteSphereImpact(const HertzImpact& hertz,
+                                       const std::array<const ElasticSphere*, 2>& spheres,
+                                       const std::array<std::optional<double>, 2>& c0_given)
+    : hertz_impact(hertz), corrections{{0.0, 0.0}, {0.0, 0.0}}, log_slope(0.0)
+{
   for (unsigned int i = 0; i < 2; ++i)
   {
+    if (!spheres[i]) // a flat body: a half-space, no finite-size term
+      continue;
     const ElasticSphere& sphere = *spheres[i];
     const double nu             = sphere.poissons_ratio;
-    if (!*c0_given[i] && nu != 0.3)
+    if (!c0_given[i] && nu != 0.3)
       throw std::invalid_argument("FiniteSphereImpact: C0 is known for nu = 0.3 only; give it "
                                   "for sphere " +
                                   std::to_string(i + 1) + " with nu = " + std::to_string(nu));
-    const double c0 = c0_given[i]->value_or(c0_for_nu_0_3);
+    const double c0 = c0_given[i].value_or(c0_for_nu_0_3);
     if (!std::isfinite(c0))
       throw std::invalid_argument("FiniteSphereImpact: C0 must be finite");
     const double er = sphere.youngs_modulus * sphere.radius;

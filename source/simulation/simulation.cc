@@ -579,10 +579,16 @@ void Simulation<dim>::write_reference_and_summary()
   if (parameters.output.write_exact_solution)
     model->write_reference(directory, step_history.column("time"), monitors);
   // The impact measures need uniform samples: the rows on the nominal grid.
-  History nominal_history(step_history.column_names());
+  model->summarize_run(directory, nominal_history(), log.get_stream());
+}
+
+template <int dim>
+History Simulation<dim>::nominal_history() const
+{
+  History nominal(step_history.column_names());
   for (const unsigned int row : nominal_rows)
-    nominal_history.add_row(step_history.row(row));
-  model->summarize_run(directory, nominal_history, log.get_stream());
+    nominal.add_row(step_history.row(row));
+  return nominal;
 }
 
 template <int dim>
@@ -837,7 +843,8 @@ void Simulation<dim>::finish()
     log << (c == 0 ? " at t = " : ", ") << counters.cut_places[c];
   if (counters.total_cuts > counters.cut_places.size())
     log << ", ...";
-  log << "), " << counters.total_solves << " linear solves, wall time " << wall_time << " s (";
+  log << "), " << counters.total_solves << " linear solves (" << solver->n_factorizations()
+      << " factorizations), wall time " << wall_time << " s (";
   const auto phases = timer.get_summary_data(TimerOutput::total_wall_time);
   for (auto phase = phases.begin(); phase != phases.end(); ++phase)
     log << (phase == phases.begin() ? "" : ", ") << phase->first << " " << phase->second << " s";

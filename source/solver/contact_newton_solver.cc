@@ -56,7 +56,8 @@ ContactNewtonSolver<dim>::ContactNewtonSolver(
     : contact(contact), parameters(parameters),
       gap_tolerance((parameters.residual_tolerance + DynamicResidual<dim>::roundoff_factor) *
                     length_scale),
-      timer(timer), n_dofs(dof_handler.n_dofs()), system(dof_handler, contact, fixed_dofs),
+      timer(timer), n_dofs(dof_handler.n_dofs()),
+      system(dof_handler, contact, fixed_dofs, parameters.direct_solver),
       residual(bodies, contact, lumped_mass, fixed_dofs)
 {
 }
@@ -201,6 +202,10 @@ void ContactNewtonSolver<dim>::take_newton_update(
 {
   Vector<double> right_hand_side = residual.residual();
   right_hand_side *= -1.;
+  {
+    TimerOutput::Scope factorization_scope(timer, "factorization");
+    system.factorize_if_changed();
+  }
   {
     TimerOutput::Scope solve_scope(timer, "linear solve");
     iteration.newton_update = system.solve(right_hand_side);

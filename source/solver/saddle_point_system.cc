@@ -2,10 +2,9 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/solver_control.h>
-#include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_vector.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <cmath>
 
 namespace dyncontact
@@ -61,11 +60,12 @@ DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,
 template <int dim>
 SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
                                           const ContactConstraints<dim>& contact,
-                                          const std::vector<types::global_dof_index>& fixed_dofs)
+                                          const std::vector<types::global_dof_index>& fixed_dofs,
+                                          const DirectSolverPackage package)
     : communicator(dof_handler.get_triangulation().get_communicator()),
       multiplier_rows_owner(Utilities::MPI::this_mpi_process(communicator) ==
                             Utilities::MPI::n_mpi_processes(communicator) - 1),
-      locally_owned_dofs(dof_handler.locally_owned_dofs())
+      locally_owned_dofs(dof_handler.locally_owned_dofs()), direct_solver(package, communicator)
 {
   const types::global_dof_index n_dofs  = dof_handler.n_dofs();
   const types::global_dof_index n_total = n_dofs + contact.n_pairs();
@@ -113,28 +113,51 @@ double SaddlePointSystem<dim>::largest_displacement_diagonal() const
 }
 
 template <int dim>
-Vector<double> SaddlePointSystem<dim>::solve(const Vector<double>& right_hand_side) const
+bool SaddlePointSystem<dim>::factorize_if_changed()
+{
+  const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
+  bool changed                   = factorized_values.empty();
+  std::size_t k                  = 0;
+  for (int row = 0; row < matrix.NumMyRows() && !changed; ++row)
+  {
+    int n_entries;
+    double* values;
+    matrix.ExtractMyRowView(row, n_entries, values);
+    // Bit for bit: != is false only for equal numbers (a NaN always counts as a change).
+    for (int i = 0; i < n_entries && !changed; ++i, ++k)
+      changed = values[i] != factorized_values[k];
+  }
+  if (Utilities::MPI::max(static_cast<int>(changed), communicator) == 0)
+    return false;
+  factorized_values.clear();
+  for (int row = 0; row < matrix.NumMyRows(); ++row)
+  {
+    int n_entries;
+    double* values;
+    matrix.ExtractMyRowView(row, n_entries, values);
+    factorized_values.insert(factorized_values.end(), values, values + n_entries);
+  }
+  try
+  {
+    direct_solver.factorize(system_matrix);
+  }
+  catch (const SolverFailure&)
+  {
+    factorized_values.clear(); // no valid factorization
+    throw;
+  }
+  return true;
+}
+
+template <int dim>
+Vector<double> SaddlePointSystem<dim>::solve(const Vector<double>& right_hand_side)
 {
   TrilinosWrappers::MPI::Vector distributed_rhs(locally_owned_rows, communicator);
   TrilinosWrappers::MPI::Vector distributed_solution(locally_owned_rows, communicator);
   for (const auto row : locally_owned_rows)
     distributed_rhs[row] = right_hand_side[row];
   distributed_rhs.compress(VectorOperation::insert);
-  try
-  {
-    SolverControl solver_control;
-    // KLU on any number of ranks (Amesos gathers the matrix to one process): MUMPS on 2 ranks gave
-    // histories that differ in the last digits from run to run of the same input on a loaded
-    // machine (3 of 3 concurrent coarse sphere runs), which breaks bitwise restart and regression
-    // checks; KLU's are identical.
-    TrilinosWrappers::SolverDirect::AdditionalData data(false, "Amesos_Klu");
-    TrilinosWrappers::SolverDirect direct_solver(solver_control, data);
-    direct_solver.solve(system_matrix, distributed_solution, distributed_rhs);
-  }
-  catch (const std::exception& error)
-  {
-    throw SolverFailure(std::string("the direct solver (Amesos) failed: ") + error.what());
-  }
+  direct_solver.solve(distributed_rhs, distributed_solution);
   // Every rank needs the whole solution: import all entries.
   TrilinosWrappers::MPI::Vector whole(
       locally_owned_rows, complete_index_set(right_hand_side.size()), communicator);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -239,5 +240,64 @@ TEST(FiniteSphereImpact, RejectsInvalidInput)
   EXPECT_THROW(FiniteSphereImpact({8.0, 5e3, 0.3, 1.0}, {8.0, 5e3, 0.3, 1.0}, 200.0, 0.0),
                std::domain_error);
   EXPECT_THROW(FiniteSphereImpact({-8.0, 5e3, 0.3, 1e-3}, paper, 2.0, 0.0), std::invalid_argument);
+}
+} // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+// A sphere on a flat body: Hertz's sphere on a half-space plus the sphere's own finite-size term.
+//  - On the rigid fixed plane it is one sphere of the identical pair pressed on their symmetry
+//    plane: the same force history as the pair at twice the speed (1e-12 of the peak: the same
+//    law through differently ordered effective quantities), half its approach.
+//  - On an elastic flat its approach is Hertz's sphere-on-flat term plus the sphere's correction
+//    C(a) F / (E R) at the common contact radius, typed out in the test (1e-13 of the approach),
+//    and its history agrees with the independent Runge-Kutta solution (1e-9 as above).
+TEST(FiniteSphereImpact, SphereOnFlatAddsOnlyTheSpheresFiniteSizeTerm)
+{
+  const ElasticSphere paper{8.0, 5e3, 0.3, 1e-3};
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  const FiniteSphereImpact on_plane =
+      FiniteSphereImpact::sphere_on_flat(paper, {infinity, 0.0, infinity}, 1.0, 0.0);
+  const FiniteSphereImpact pair(paper, paper, 2.0, 0.0);
+  const double peak = pair.maximum_force();
+  EXPECT_NEAR(on_plane.maximum_force(), peak, 1e-12 * peak);
+  EXPECT_NEAR(
+      on_plane.contact_duration(), pair.contact_duration(), 1e-12 * pair.contact_duration());
+  for (const double t : {0.01, 0.03, 0.04, 0.07})
+  {
+    EXPECT_NEAR(on_plane.contact_force(t), pair.contact_force(t), 1e-12 * peak) << "t = " << t;
+    EXPECT_NEAR(on_plane.approach(t), 0.5 * pair.approach(t), 1e-12 * pair.maximum_approach());
+  }
+
+  const double block_mass           = 1e-3 * pi * 40.0 * 40.0 * 40.0;
+  const ElasticFlatBody block       = {5e3, 0.3, block_mass};
+  const FiniteSphereImpact on_block = FiniteSphereImpact::sphere_on_flat(paper, block, 1.0, 0.0);
+  const HertzImpact hertz           = HertzImpact::sphere_on_flat(paper, block, 1.0, 0.0);
+  const double e_star               = hertz.effective_modulus();
+  const double k                    = 1.3 * 0.4 * 0.4 / (2.0 * pi);
+  for (const double force : {1.0, 30.0, on_block.maximum_force()})
+  {
+    // Hertz's approach of the pair plus the sphere's term C(a) F / (E R), a the pair's contact
+    // radius (the class's model: each body's term at the common contact radius).
+    const double a        = std::cbrt(3.0 * force * 8.0 / (4.0 * e_star));
+    const double expected = std::pow(force / (4.0 / 3.0 * e_star * std::sqrt(8.0)), 2.0 / 3.0) +
+                            (-0.49 + k * std::log(8.0 / a)) * force / (5e3 * 8.0);
+    EXPECT_NEAR(on_block.approach_under_force(force), expected, 1e-13 * expected)
+        << "F = " << force;
+  }
+  std::cout << "  sphere on block: law peak " << on_block.maximum_force() << " vs Hertz "
+            << hertz.maximum_force() << ", duration " << on_block.contact_duration() << " vs "
+            << hertz.contact_duration() << std::endl;
+  // The finite sphere is stiffer: about half the pair's excess over Hertz (only one body has the
+  // finite-size term; the pair's law is +2.7 %).
+  EXPECT_GT(on_block.maximum_force(), 1.01 * hertz.maximum_force());
+  EXPECT_LT(on_block.maximum_force(), 1.02 * hertz.maximum_force());
+
+  const unsigned int n_steps      = 1u << 14;
+  const double h                  = 1.02 * on_block.contact_duration() / n_steps;
+  const std::vector<OdeState> ode = finite_sphere_history(on_block, h, n_steps);
+  for (unsigned int i = 0; i <= n_steps; i += 128)
+    EXPECT_NEAR(on_block.approach(i * h), ode[i].d, 1e-9 * on_block.maximum_approach())
+        << "t = " << i * h;
 }
 } // namespace dyncontact::testing

@@ -561,8 +561,8 @@ namespace dyncontact::testing
 // The Hertz reference of prm/sphere_on_block.prm: the sphere (R = 8) on the block's flat top face
 // z = 0, HertzImpact::sphere_on_flat with the block's E, nu and its meshed mass rho V, V = pi
 // 40^2 40 (a cylinder of straight faces: the Q2 volume of revolution is exact to round-off), first
-// touch after the gap 2 at speed 1. No finite-sphere law for an elastic flat body.
-TEST(GeneralMeshes, SphereOnBlockHasHertzsSphereOnFlatReference)
+// touch after the gap 2 at speed 1; and the finite-sphere law of the sphere on that half-space.
+TEST(GeneralMeshes, SphereOnBlockHasSphereOnFlatReferences)
 {
   const RunParameters parameters =
       ParameterReader(
@@ -586,7 +586,15 @@ TEST(GeneralMeshes, SphereOnBlockHasHertzsSphereOnFlatReference)
       hertz->effective_mass(), expected.effective_mass(), 1e-12 * expected.effective_mass());
   EXPECT_NEAR(hertz->first_touch_time(), 2., 1e-12);
   EXPECT_NEAR(hertz->maximum_force(), expected.maximum_force(), 1e-9 * expected.maximum_force());
-  EXPECT_FALSE(model.finite_sphere_reference());
+  // The finite-sphere law of the sphere on the block's half-space (the model's body volume as
+  // mass, as for Hertz): FiniteSphereImpact::sphere_on_flat() with the same data (1e-9, as Hertz).
+  const auto law = model.finite_sphere_reference();
+  ASSERT_TRUE(law);
+  const FiniteSphereImpact expected_law =
+      FiniteSphereImpact::sphere_on_flat(sphere, {5e3, 0.3, block_mass}, 1., 2.);
+  EXPECT_NEAR(law->maximum_force(), expected_law.maximum_force(), 1e-9 * law->maximum_force());
+  EXPECT_NEAR(
+      law->contact_duration(), expected_law.contact_duration(), 1e-9 * law->contact_duration());
 }
 } // namespace dyncontact::testing
 

@@ -1,7 +1,11 @@
 // Acceptance tests of the paper's modified Newmark on non-matching meshes (node-to-segment pairs):
 // the identical spheres of section 6.4 at rho = 0.001, body 2 meshed with more divisions than
 // body 1 (meshes/two_spheres_nonmatching.geo), so that no slave node faces a master node.
+#include <dyncontact/base/parameters.h>
+#include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/reference/impact_measures.h>
+
+#include <deal.II/grid/tria.h>
 
 #include <algorithm>
 #include <cmath>
@@ -119,5 +123,54 @@ TEST(NonMatchingImpact, TightestNewtonToleranceCompletesWithTheSameAnswer)
   std::cout << "peak at tolerance 1e-16: " << tight_peak << ", at 1e-10: " << default_peak << "\n";
   EXPECT_EQ(tight.history().n_rows(), modified_run().history().n_rows());
   EXPECT_NEAR(tight_peak, default_peak, 1e-9 * default_peak);
+}
+} // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+// Acceptance D of the non-matching issue, pinned on the coarsest mesh: the dissimilar spheres
+// (prm/dissimilar_spheres.prm: R1 = 8, R2 = 4, E and rho differing by 2, meshes matching nothing,
+// node-to-segment, modified scheme) against their two references, Hertz and the finite-sphere law
+// (each sphere its own approach, doc/method.md). The law, not Hertz, is what the run converges to
+// (bench/non_matching_hertz.sh: peak +2.10, +1.88, +2.21 % from Hertz on Refinement 0, 1, 2 against
+// the law's +2.41 %; Refinement 2 at dt / 2 is -0.07 % from the law).
+TEST(NonMatchingImpact, DissimilarSpheresFollowTheFiniteSphereLawNotHertz)
+{
+  const std::vector<std::string> coarse = {
+      "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3",
+      "Output/vtu interval=0"};
+  const MeshRun run = run_mesh_case("prm/dissimilar_spheres.prm", coarse);
+  AxisymmetricMeshModel model(
+      run.parameters.mesh, run.parameters.bodies, run.parameters.contact.pairs);
+  Triangulation<2> mesh;
+  model.create_triangulation(mesh);
+  const auto hertz = model.hertz_reference();
+  const auto law   = model.finite_sphere_reference();
+  ASSERT_TRUE(hertz && law);
+  // The energy guard cuts two steps at release (to 0.00125): the measures take the nominal grid.
+  const History history = run.simulation->nominal_history();
+  const ImpactMeasures computed =
+      measure_impact(history.column("time"), history.column("contact_force"));
+  const auto relative = [](const double value, const double reference)
+  { return value / reference - 1.; };
+  std::cout << "peak " << computed.peak_force << ": law "
+            << 100 * relative(computed.peak_force, law->maximum_force()) << " %, Hertz "
+            << 100 * relative(computed.peak_force, hertz->maximum_force()) << " %; duration "
+            << computed.duration << ": law "
+            << 100 * relative(computed.duration, law->contact_duration()) << " %, Hertz "
+            << 100 * relative(computed.duration, hertz->contact_duration()) << " %; impulse "
+            << computed.impulse << ": law " << 100 * relative(computed.impulse, law->impulse())
+            << " %\n";
+  // The law lies 2.4 % above Hertz in peak and 1.7 % below in duration; this coarse mesh (about 4
+  // Q2 elements across the contact radius of the smaller sphere) is within 0.3 % of the law in
+  // both (measured: peak -0.30 %, duration +0.30 %), so 0.6 % holds it to the law and fails if the
+  // run follows Hertz instead (or a refactoring moves it by twice its discretization error).
+  EXPECT_LT(std::abs(relative(computed.peak_force, law->maximum_force())), 6e-3);
+  EXPECT_LT(std::abs(relative(computed.duration, law->contact_duration())), 6e-3);
+  EXPECT_GT(relative(computed.peak_force, hertz->maximum_force()), 1.2e-2);
+  // Impulse: the momenta exchanged, 2 m* v in both references (the bodies separate elastically);
+  // the trapezoid over the samples misses the force between the last sample and the release
+  // within the step (measured +0.079 %), so 0.2 %.
+  EXPECT_LT(std::abs(relative(computed.impulse, law->impulse())), 2e-3);
 }
 } // namespace dyncontact::testing

@@ -92,15 +92,15 @@ struct TwoSprings
     contact   = std::make_unique<ContactConstraints<1>>(
         std::vector<ContactPair<1>>{{node_a, {{node_b, 1.}}, Point<1>(), normal, 1.}},
         ContactFormulation::lagrange_multiplier);
-    solver =
-        std::make_unique<ContactNewtonSolver<1>>(dof_handler,
-                                                 *bodies,
-                                                 *contact,
-                                                 mass,
-                                                 fixed,
-                                                 NewtonParameters{variant.max_iterations, 1e-12},
-                                                 1.,
-                                                 timer);
+    solver = std::make_unique<ContactNewtonSolver<1>>(
+        dof_handler,
+        *bodies,
+        *contact,
+        mass,
+        fixed,
+        NewtonParameters{variant.max_iterations, 1e-12, DirectSolverPackage::klu},
+        1.,
+        timer);
   }
 
   static CellData<1> cell(const unsigned int v0, const unsigned int v1, const unsigned int body)
@@ -226,52 +226,85 @@ TEST(SaddlePointNewton, LumpedMassIsTheHandValue)
 // a = 0.25, b = -0.25, lambda = 1, fixed ends 0.15 (right-hand side 0.3 over the diagonal 2);
 // the right-hand side is the matrix times it, by hand: row a: 4 (0.25) - 3 (0.15) + 1 = 1.55,
 // row b: 4 (-0.25) - 3 (0.15) - 1 = -2.45, constraint row: 0.25 + 0.25 = 0.5.
+//
+// Each direct solver package (KLU, UMFPACK, MUMPS) on the same system; the factorization is kept
+// while the matrix stays the same: assembling the same entries again does not refactorize and
+// solves the same, and the whole matrix assembled with twice its entries (fixed rows 4) is
+// refactorized, giving half the solution (a stale factorization would give the old one).
 TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePointAndClearsFixedRows)
 {
   const TwoSprings springs;
-  SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed);
-  ASSERT_TRUE(system.owns_multiplier_rows());
-  const types::global_dof_index a = springs.a, b = springs.b, lambda = springs.dof_handler.n_dofs();
-  const types::global_dof_index fixed_a = springs.fixed[0], fixed_b = springs.fixed[1];
-  system.start_assembly();
-  auto& matrix = system.matrix();
-  for (const auto& [free, fixed] : {std::pair{a, fixed_a}, std::pair{b, fixed_b}})
+  for (const auto package :
+       {DirectSolverPackage::klu, DirectSolverPackage::umfpack, DirectSolverPackage::mumps})
   {
-    matrix.add(free, free, 4.);
-    matrix.add(free, fixed, -3.);
-    matrix.add(fixed, free, -3.);
-    matrix.add(fixed, fixed, 3.);
-  }
-  matrix.add(lambda, a, 1.);
-  matrix.add(a, lambda, 1.);
-  matrix.add(lambda, b, -1.);
-  matrix.add(b, lambda, -1.);
-  system.finish_assembly(2.);
-  EXPECT_EQ(system.largest_displacement_diagonal(), 4.);
+    SCOPED_TRACE(direct_solver_names().name(package));
+    SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed, package);
+    ASSERT_TRUE(system.owns_multiplier_rows());
+    const types::global_dof_index a = springs.a, b = springs.b,
+                                  lambda  = springs.dof_handler.n_dofs();
+    const types::global_dof_index fixed_a = springs.fixed[0], fixed_b = springs.fixed[1];
+    const auto assemble = [&](const double scale)
+    {
+      system.start_assembly();
+      auto& matrix = system.matrix();
+      for (const auto& [free, fixed] : {std::pair{a, fixed_a}, std::pair{b, fixed_b}})
+      {
+        matrix.add(free, free, 4. * scale);
+        matrix.add(free, fixed, -3. * scale);
+        matrix.add(fixed, free, -3. * scale);
+        matrix.add(fixed, fixed, 3. * scale);
+      }
+      matrix.add(lambda, a, 1. * scale);
+      matrix.add(a, lambda, 1. * scale);
+      matrix.add(lambda, b, -1. * scale);
+      matrix.add(b, lambda, -1. * scale);
+      system.finish_assembly(2. * scale);
+    };
+    assemble(1.);
+    EXPECT_EQ(system.largest_displacement_diagonal(), 4.);
 
-  Vector<double> right_hand_side(lambda + 1);
-  right_hand_side[a]            = 1.55;
-  right_hand_side[b]            = -2.45;
-  right_hand_side[fixed_a]      = 0.3;
-  right_hand_side[fixed_b]      = 0.3;
-  right_hand_side[lambda]       = 0.5;
-  const Vector<double> solution = system.solve(right_hand_side);
-  EXPECT_NEAR(solution[a], 0.25, tolerance);
-  EXPECT_NEAR(solution[b], -0.25, tolerance);
-  EXPECT_NEAR(solution[lambda], 1., tolerance);
-  EXPECT_NEAR(solution[fixed_a], 0.15, tolerance);
-  EXPECT_NEAR(solution[fixed_b], 0.15, tolerance);
+    Vector<double> right_hand_side(lambda + 1);
+    right_hand_side[a]       = 1.55;
+    right_hand_side[b]       = -2.45;
+    right_hand_side[fixed_a] = 0.3;
+    right_hand_side[fixed_b] = 0.3;
+    right_hand_side[lambda]  = 0.5;
+    EXPECT_TRUE(system.factorize_if_changed());
+    const Vector<double> solution = system.solve(right_hand_side);
+    EXPECT_NEAR(solution[a], 0.25, tolerance);
+    EXPECT_NEAR(solution[b], -0.25, tolerance);
+    EXPECT_NEAR(solution[lambda], 1., tolerance);
+    EXPECT_NEAR(solution[fixed_a], 0.15, tolerance);
+    EXPECT_NEAR(solution[fixed_b], 0.15, tolerance);
+
+    assemble(1.);
+    EXPECT_FALSE(system.factorize_if_changed());
+    const Vector<double> again = system.solve(right_hand_side);
+    for (unsigned int i = 0; i < solution.size(); ++i)
+      EXPECT_EQ(again[i], solution[i]);
+    EXPECT_EQ(system.n_factorizations(), 1u);
+
+    assemble(2.);
+    EXPECT_TRUE(system.factorize_if_changed());
+    const Vector<double> half = system.solve(right_hand_side);
+    for (unsigned int i = 0; i < solution.size(); ++i)
+      EXPECT_NEAR(half[i], 0.5 * solution[i], tolerance);
+    EXPECT_EQ(system.n_factorizations(), 2u);
+  }
 }
 
 TEST(SaddlePointNewton, SingularSystemIsASolverFailure)
 {
   const TwoSprings springs;
-  SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed);
-  system.start_assembly();
-  system.finish_assembly(0.); // all zero
-  const std::string message =
-      solver_failure([&] { system.solve(Vector<double>(springs.dof_handler.n_dofs() + 1)); });
-  EXPECT_EQ(message.rfind("the direct solver (Amesos) failed: ", 0), 0u) << message;
+  for (const auto package :
+       {DirectSolverPackage::klu, DirectSolverPackage::umfpack, DirectSolverPackage::mumps})
+  {
+    SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed, package);
+    system.start_assembly();
+    system.finish_assembly(0.); // all zero
+    const std::string message = solver_failure([&] { system.factorize_if_changed(); });
+    EXPECT_EQ(message.rfind("the direct solver (", 0), 0u) << message;
+  }
 }
 
 // p = 2: the predictor penetrates (g = 0.5 - 4), the pair enters, Newton restarts from u_n = 0

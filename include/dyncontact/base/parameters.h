@@ -4,6 +4,7 @@
 #include <dyncontact/base/name_table.h>
 #include <dyncontact/contact/contact_discretization.h>
 #include <dyncontact/contact_dynamics/contact_dynamics_kind.h>
+#include <dyncontact/solver/direct_solver_package.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
@@ -100,6 +101,7 @@ struct NewtonParameters
 {
   unsigned int max_iterations;
   double residual_tolerance;
+  DirectSolverPackage direct_solver;
 
   static void declare_parameters(ParameterHandler& prm);
   void parse_parameters(ParameterHandler& prm);

@@ -93,9 +93,10 @@ public:
   std::optional<HertzImpact> hertz_reference() const;
   /**
    * The finite-sphere law (FiniteSphereImpact, doc/method.md section 5) for the impacts of
-   * hertz_reference() that it covers: two spheres, and a sphere on the rigid plane (the mirrored
-   * pair: the same sphere twice at twice the speed). Empty for a sphere on an elastic flat body
-   * (a half-space has no finite-size term and the law is not derived for it), where Hertz does
+   * hertz_reference() that it covers: two spheres; a sphere on the rigid plane (the mirrored
+   * pair: the same sphere twice at twice the speed); a sphere on an elastic flat body
+   * (FiniteSphereImpact::sphere_on_flat(): the sphere's finite-size term on Hertz's half-space;
+   * the flat body's own finite size, e.g. a block's depth, is not in it). Empty where Hertz does
    * not apply, and where the law does not (a Poisson's ratio other than 0.3, whose C0 is unknown,
    * or an impact beyond the law's range: FiniteSphereImpact's constructor throws).
    */
@@ -128,6 +129,11 @@ private:
     double approach_speed, gap;
   };
   std::optional<HeadOnImpact> head_on_impact() const;
+  /**
+   * The flat side of a sphere-on-flat impact as Hertz sees it: the elastic body's E, nu and mass
+   * rho V (V its meshed volume), or the rigid plane (E and mass infinite).
+   */
+  ElasticFlatBody flat_body(const ImpactSide& side) const;
   /** The ElasticSphere of body b with the sphere `geometry`. */
   ElasticSphere elastic_sphere(unsigned int body, const SphereGeometry& geometry) const;
   /**

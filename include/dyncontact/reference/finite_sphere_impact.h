@@ -3,6 +3,7 @@
 #include <dyncontact/reference/hertz_impact.h>
 #include <dyncontact/reference/sphere_breathing_mode.h>
 
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -69,9 +70,10 @@ namespace dyncontact
  * This is what it is NOT: small strain only (linear elasticity: at finite strain the material law
  * shifts the result, doc/method.md), quasi-static (no waves, as Hertz), a first-order correction in
  * a / R (not for a approaching R), only as good as C0 (an FE fit, about 2 digits), only spheres
- * (no flat body: a half-space has no finite-size term, use HertzImpact::sphere_on_flat()), and an
- * independent reference, not coupled to the finite-element code. Only rho v^2 / E matters for the
- * relative deviation from Hertz: it vanishes as rho v^2 / E goes to zero.
+ * and a sphere on a flat body (sphere_on_flat(): the flat body is a half-space, which has no
+ * finite-size term; a finite block's own compliance is not in it), and an independent reference,
+ * not coupled to the finite-element code. Only rho v^2 / E matters for the relative deviation from
+ * Hertz: it vanishes as rho v^2 / E goes to zero.
  */
 class FiniteSphereImpact
 {
@@ -94,6 +96,19 @@ public:
                      double first_touch_time,
                      std::optional<double> first_c0  = std::nullopt,
                      std::optional<double> second_c0 = std::nullopt);
+
+  /**
+   * A sphere striking a flat body (HertzImpact::sphere_on_flat(), whose checks and throws apply):
+   * Hertz's sphere on a half-space plus the sphere's own finite-size term C(a) F / (E R), the
+   * half-space having none. With C0 @p c0 (omitted: c0_for_nu_0_3, nu = 0.3 only). A rigid fixed
+   * flat gives the sphere pressed on the symmetry plane, i.e. the law of one of two identical
+   * spheres.
+   */
+  static FiniteSphereImpact sphere_on_flat(const ElasticSphere& sphere,
+                                           const ElasticFlatBody& flat,
+                                           double relative_approach_speed,
+                                           double first_touch_time,
+                                           std::optional<double> c0 = std::nullopt);
 
   /// The coefficient k = (1 + nu) (1 - 2 nu)^2 / (2 pi) of ln(R / a) in C(a).
   static double log_coefficient(double poissons_ratio);
@@ -135,6 +150,15 @@ public:
   std::vector<double> contact_force_history(const std::vector<double>& times) const;
 
 private:
+  /**
+   * The law on top of the Hertz impact @p hertz of the same bodies: the finite-size terms of the
+   * spheres @p spheres (nullptr: a flat body, no term) with their C0 @p c0_given (see the public
+   * constructor for the checks).
+   */
+  FiniteSphereImpact(const HertzImpact& hertz,
+                     const std::array<const ElasticSphere*, 2>& spheres,
+                     const std::array<std::optional<double>, 2>& c0_given);
+
   /// One sphere's part of c(F): C0 + k ln R and k, over E R.
   struct Correction
   {

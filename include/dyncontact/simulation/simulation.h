@@ -79,6 +79,12 @@ public:
   /** The recorded history, one row per accepted (sub-)step including t = 0. */
   const History& history() const { return step_history; }
 
+  /**
+   * The rows of history() on the nominal time grid (t = n dt, uniform: what the impact measures
+   * and the Hertz comparison take); the sub-steps of cut steps are left out.
+   */
+  History nominal_history() const;
+
   /** Lumped nodal masses per DoF. */
   const Vector<double>& lumped_mass() const { return mass; }
 

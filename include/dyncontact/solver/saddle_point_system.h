@@ -2,6 +2,7 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/solver/direct_solver.h>
 
 #include <deal.II/base/index_set.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -23,9 +24,14 @@ namespace dyncontact
  * every candidate pair, active or not). Parallel layout: rows are distributed like the DoFs, the
  * multiplier rows belong to the last MPI rank; each rank's pattern holds the full rows it writes
  * (those of its locally owned cells and, on the last rank, the constraint rows and the DoFs they
- * couple to); entries in rows owned elsewhere are sent on finish_assembly(). The direct solver is
- * Amesos KLU on every number of ranks (bitwise reproducible; MUMPS was not, run to run, on 2
- * ranks). Vectors passed in and out are whole (all n_dofs + n_pairs entries) on every rank.
+ * couple to); entries in rows owned elsewhere are sent on finish_assembly(). Vectors passed in and
+ * out are whole (all n_dofs + n_pairs entries) on every rank.
+ *
+ * The direct solve keeps its factorization (DirectSolver, symbolic analysis once for the fixed
+ * pattern): factorize_if_changed() factorizes only if an assembly changed any entry since the
+ * last factorization (compared bit for bit), so a matrix that stays the same from one Newton
+ * iteration or step to the next (linear material, the same active set and pairs) is factorized
+ * once, and the solution is the same to the last bit as with a fresh factorization.
  *
  * Rows of fixed DoFs (e.g. u_r = 0 on a symmetry axis) are replaced by a diagonal row on
  * finish_assembly(), so that a zero right-hand side there gives a zero increment.
@@ -48,7 +54,8 @@ public:
    */
   SaddlePointSystem(const DoFHandler<dim>& dof_handler,
                     const ContactConstraints<dim>& contact,
-                    const std::vector<types::global_dof_index>& fixed_dofs);
+                    const std::vector<types::global_dof_index>& fixed_dofs,
+                    DirectSolverPackage package);
 
   /** The matrix, for adding entries of the leading block and the constraint rows. */
   Matrix& matrix() { return system_matrix; }
@@ -86,11 +93,21 @@ public:
   double largest_displacement_diagonal() const;
 
   /**
-   * Solves matrix * solution = right_hand_side by the direct solver (Amesos KLU); both vectors have
-   * n_dofs + n_pairs entries and are whole on every rank. Throws SolverFailure ("the direct solver
-   * (Amesos) failed: ...") if the factorization or solve fails, e.g. for a singular matrix.
+   * Factorizes the matrix unless its entries are bit for bit those of the last factorization
+   * (collective); returns whether it factorized. Throws SolverFailure if the factorization fails,
+   * e.g. for a singular matrix.
    */
-  Vector<double> solve(const Vector<double>& right_hand_side) const;
+  bool factorize_if_changed();
+
+  /**
+   * Solves matrix * solution = right_hand_side with the last factorization (factorize_if_changed()
+   * must have been called since the last assembly); both vectors have n_dofs + n_pairs entries
+   * and are whole on every rank. Throws SolverFailure if the solve fails.
+   */
+  Vector<double> solve(const Vector<double>& right_hand_side);
+
+  /** The number of numeric factorizations so far. */
+  unsigned int n_factorizations() const { return direct_solver.n_factorizations(); }
 
 private:
   const MPI_Comm communicator;
@@ -101,5 +118,8 @@ private:
   IndexSet locally_owned_rows;
   std::vector<types::global_dof_index> locally_owned_fixed_rows;
   Matrix system_matrix;
+  DirectSolver direct_solver;
+  /** This rank's matrix entries (row by row) at the last factorization; empty before the first. */
+  std::vector<double> factorized_values;
 };
 } // namespace dyncontact
