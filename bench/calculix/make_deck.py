@@ -103,7 +103,7 @@ def main():
     ap.add_argument("--out", required=True, help="output directory")
     ap.add_argument("--pole-size", type=float, default=0.04, help="PoleSize of sphere_graded.geo")
     ap.add_argument("--far-size", type=float, default=0.8, help="FarSize of sphere_graded.geo")
-    ap.add_argument("--zone-radius", type=float, default=0.5,
+    ap.add_argument("--zone-radius", type=float, default=0.0,
                     help="ZoneRadius of sphere_graded.geo (0: 2 x the Hertz contact radius)")
     ap.add_argument("--rho", type=float, default=0.001, help="density")
     ap.add_argument("--dt", type=float, default=None, help="time step (default 0.0025 at rho "
