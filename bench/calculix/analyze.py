@@ -138,7 +138,8 @@ def plot(path, t, f, info, window):
     ax.set_xlabel("t")
     ax.set_ylabel("contact force (full ring)")
     mat = "NLGEOM (St Venant-Kirchhoff)" if info["nlgeom"] else "linear elastic"
-    ax.set_title(f"sphere on rigid plane, rho = {info['rho']:g}, {mat}, dt = {info['dt']:g}")
+    ax.set_title(f"sphere on rigid plane, rho = {info['rho']:g}, {mat}, dt = {info['dt']:g}, "
+                 f"alpha = {info['alpha']:g}", fontsize=10)
     ax.grid(alpha=0.3)
     ax.legend()
     fig.tight_layout()

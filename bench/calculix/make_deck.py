@@ -101,10 +101,13 @@ def lines_of(ids, per_line=8):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--out", required=True, help="output directory")
-    ap.add_argument("--pole-size", type=float, default=0.04, help="PoleSize of sphere_graded.geo")
+    ap.add_argument("--pole-size", type=float, default=0.0,
+                    help="PoleSize of sphere_graded.geo (0: 0.05 (rho/0.001)^0.2, i.e. the Hertz "
+                    "contact radius / 9.4: the converged mesh of README.md at rho 0.001)")
     ap.add_argument("--far-size", type=float, default=0.8, help="FarSize of sphere_graded.geo")
     ap.add_argument("--zone-radius", type=float, default=0.0,
-                    help="ZoneRadius of sphere_graded.geo (0: 2 x the Hertz contact radius)")
+                    help="ZoneRadius of sphere_graded.geo (0: 0.5 (rho/0.001)^0.2, i.e. 1.06 x the "
+                    "Hertz contact radius: the geo's default at rho 0.001)")
     ap.add_argument("--rho", type=float, default=0.001, help="density")
     ap.add_argument("--dt", type=float, default=None, help="time step (default 0.0025 at rho "
                     "0.001, 0.05 at rho 1, else 0.0025 (rho/0.001)^0.4)")
@@ -125,8 +128,10 @@ def main():
     ap.add_argument("--c0", type=float, default=0.0,
                     help="ccx's c0 (spring elements up to clearance c0 sqrt(slave area); 0: ccx's "
                     "default 1e-3)")
-    ap.add_argument("--alpha", type=float, default=0.0,
-                    help="HHT alpha of *DYNAMIC (0: trapezoidal Newmark, ccx's default -0.05)")
+    ap.add_argument("--alpha", type=float, default=None,
+                    help="HHT alpha of *DYNAMIC, in [-1/3, 0] (default 0, trapezoidal Newmark, for "
+                    "the linear material; ccx's own default -0.05 with --nlgeom, where 0 diverges "
+                    "in ccx 2.20 with DIRECT, see README.md)")
     ap.add_argument("--launch", choices=["gravity", "initial-velocity"], default="gravity",
                     help="how the sphere gets its speed (see README.md)")
     ap.add_argument("--slave-depth", type=float, default=None,
@@ -134,6 +139,9 @@ def main():
                     "(default min(R, 4 x Hertz contact radius + 0.5))")
     ap.add_argument("--contact", choices=["node", "surface"], default="node",
                     help="*CONTACT PAIR TYPE: NODE TO SURFACE (default) or SURFACE TO SURFACE")
+    ap.add_argument("--small-sliding", action="store_true",
+                    help="*CONTACT PAIR, SMALL SLIDING: pair the slave nodes once per increment "
+                    "instead of in every iteration")
     ap.add_argument("--print-every", type=int, default=1, help="*NODE PRINT FREQUENCY")
     a = ap.parse_args()
 
@@ -143,8 +151,12 @@ def main():
         a.dt = 0.05 if a.rho == 1.0 else 0.0025 * scale
     if a.end_time is None:
         a.end_time = 4.0 if a.rho == 1.0 else (2.2 if a.rho == 0.001 else 2.0 + 2.4 * h["duration"])
+    if a.alpha is None:
+        a.alpha = -0.05 if a.nlgeom else 0.0
+    if a.pole_size <= 0:
+        a.pole_size = 0.05 * (a.rho / 0.001) ** 0.2
     if a.zone_radius <= 0:
-        a.zone_radius = 2.0 * h["contact_radius"]
+        a.zone_radius = 0.5 * (a.rho / 0.001) ** 0.2
     if a.sigma_inf is None:
         a.sigma_inf = 1e-4 * h["peak_pressure"]
     if a.slave_depth is None:
@@ -248,7 +260,8 @@ def main():
     w("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR")
     w(f"{slope:.15g}, {a.sigma_inf:.15g}" + (f", {a.c0:.15g}" if a.c0 > 0 else ""))
     ctype = "NODE TO SURFACE" if a.contact == "node" else "SURFACE TO SURFACE"
-    w(f"*CONTACT PAIR, INTERACTION=SINT, TYPE={ctype}")
+    ss = ", SMALL SLIDING" if a.small_sliding else ""
+    w(f"*CONTACT PAIR, INTERACTION=SINT, TYPE={ctype}{ss}")
     w("SSLAVE, SMASTER")
     if a.launch == "initial-velocity":
         w("*INITIAL CONDITIONS, TYPE=VELOCITY")

@@ -7,7 +7,7 @@
 # (as root), and is skipped with a note (status 0) when it cannot.
 #
 # Usage: bench/calculix/run.sh [--label NAME] [make_deck.py options]
-#   bench/calculix/run.sh                                   # rho 0.001, linear, pole size 0.04
+#   bench/calculix/run.sh                                   # rho 0.001, linear, pole size 0.05
 #   bench/calculix/run.sh --label p0.1 --pole-size 0.1      # a coarser mesh
 #   bench/calculix/run.sh --nlgeom                          # finite strain (St Venant-Kirchhoff)
 #   bench/calculix/run.sh --rho 1                           # dt 0.05, end time 4
