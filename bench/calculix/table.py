@@ -23,7 +23,8 @@ def main():
             rows[r["label"]] = r
     labels = a.labels.split(",") if a.labels else list(rows)
     cols = [("run", "label"), ("rho", "rho"), ("material", "material"),
-            ("pole edge", "pole_edge"), ("equations", "equations"), ("t0", "start_time"),
+            ("pole edge", "pole_edge"), ("zone", "zone_radius"), ("cells", "elements"),
+            ("equations", "equations"), ("t0", "start_time"),
             ("increments", "increments"), ("iterations", "iterations"), ("wall [s]", "wall_s"),
             ("RSS [MB]", "peak_rss_mb"), ("peak", "peak"), ("vs Hertz", "peak_vs_hertz_pct"),
             ("duration", "duration"), ("vs Hertz", "duration_vs_hertz_pct"),
@@ -36,7 +37,7 @@ def main():
         for _, k in cols:
             v = r.get(k, "")
             if k.endswith("_pct") and v not in ("", None):
-                v = f"{float(v):+.2f} %"
+                v = f"{float(v):+.3f} %"
             cells.append(str(v))
         print("| " + " | ".join(cells) + " |")
 
