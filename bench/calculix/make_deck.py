@@ -8,8 +8,8 @@ It touches at t = 2.
 
 ccx's axisymmetric convention: x = r >= 0, y = the axis (so the model's z is ccx's y). CAX8
 elements are expanded internally into a 2-degree wedge of C3D20 elements (rotation about the y
-axis, +-1 degree); the rigid plane is one fixed C3D8 brick whose top face y = 0 covers that wedge
-(see README.md for why not a CAX8 plate). Its reaction force is the force on the 2-degree wedge:
+axis, +-1 degree); the rigid plane is one fixed C3D8 brick above the sphere whose face y = 0
+covers that wedge (see README.md for why not a CAX8 plate). Its reaction force is the force on the 2-degree wedge:
 the full ring is 180 times it.
 
 Usage: make_deck.py --out DIR [options]; writes DIR/sphere.inp (the deck), DIR/sphere.msh (the
@@ -133,7 +133,9 @@ def main():
                     "the linear material; ccx's own default -0.05 with --nlgeom, where 0 diverges "
                     "in ccx 2.20 with DIRECT, see README.md)")
     ap.add_argument("--launch", choices=["gravity", "initial-velocity"], default="gravity",
-                    help="how the sphere gets its speed (see README.md)")
+                    help="how the sphere gets its speed: a one-increment body-force step "
+                    "(default), or *INITIAL CONDITIONS, TYPE=VELOCITY, which ccx 2.20 ignores on "
+                    "CAX8 nodes (kept to show that; see README.md)")
     ap.add_argument("--slave-depth", type=float, default=None,
                     help="slave faces: the surface within this axial distance of the pole "
                     "(default min(R, 4 x Hertz contact radius + 0.5))")
@@ -172,6 +174,9 @@ def main():
     launch_shift = 0.5 * V * a.dt if a.launch == "gravity" else 0.0
     gap = 2.0 - V * a.start_time - launch_shift
     centre_z = -(R + gap)
+    if 2.0 - a.start_time < a.dt - 1e-12 or a.start_time < 0:
+        sys.exit(f"make_deck.py: --start-time {a.start_time:g} must lie in [0, 2 - dt]: the "
+                 "launch increment must end before the contact")
 
     os.makedirs(a.out, exist_ok=True)
     msh = os.path.join(a.out, "sphere.msh")
