@@ -9,8 +9,8 @@ It touches at t = 2.
 ccx's axisymmetric convention: x = r >= 0, y = the axis (so the model's z is ccx's y). CAX8
 elements are expanded internally into a 2-degree wedge of C3D20 elements (rotation about the y
 axis, +-1 degree); the rigid plane is one fixed C3D8 brick above the sphere whose face y = 0
-covers that wedge (see README.md for why not a CAX8 plate). Its reaction force is the force on the 2-degree wedge:
-the full ring is 180 times it.
+covers that wedge (see README.md for why not a CAX8 plate). Its reaction force is the force on
+the 2-degree wedge: the full ring is 180 times it.
 
 Usage: make_deck.py --out DIR [options]; writes DIR/sphere.inp (the deck), DIR/sphere.msh (the
 gmsh mesh) and DIR/deck.json (the parameters and the derived figures the runner needs).
