@@ -1,0 +1,46 @@
+#!/usr/bin/python3
+"""Markdown table of CalculiX runs: the summary.csv rows that run.sh appended to
+bench/results/calculix.csv (or any such CSV given as argument); the last row of each label wins.
+Usage: table.py [CSV] [--labels A,B,...]"""
+import argparse
+import csv
+import os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("csv", nargs="?",
+                    default=os.path.join(HERE, "..", "results", "calculix.csv"))
+    ap.add_argument("--labels", default=None, help="comma-separated labels, in this order")
+    a = ap.parse_args()
+    rows = {}
+    with open(a.csv) as f:
+        for r in csv.DictReader(f):
+            if r["label"] == "label":
+                continue
+            rows[r["label"]] = r
+    labels = a.labels.split(",") if a.labels else list(rows)
+    cols = [("run", "label"), ("rho", "rho"), ("material", "material"),
+            ("pole edge", "pole_edge"), ("zone", "zone_radius"), ("cells", "elements"),
+            ("equations", "equations"), ("t0", "start_time"),
+            ("increments", "increments"), ("iterations", "iterations"), ("wall [s]", "wall_s"),
+            ("RSS [MB]", "peak_rss_mb"), ("peak", "peak"), ("vs Hertz", "peak_vs_hertz_pct"),
+            ("duration", "duration"), ("vs Hertz", "duration_vs_hertz_pct"),
+            ("impulse", "impulse"), ("vs 2mv", "impulse_vs_2mv_pct")]
+    print("| " + " | ".join(c[0] for c in cols) + " |")
+    print("|" + "---|" * len(cols))
+    for lab in labels:
+        r = rows[lab]
+        cells = []
+        for _, k in cols:
+            v = r.get(k, "")
+            if k.endswith("_pct") and v not in ("", None):
+                v = f"{float(v):+.3f} %"
+            cells.append(str(v))
+        print("| " + " | ".join(cells) + " |")
+
+
+if __name__ == "__main__":
+    main()
