@@ -269,6 +269,13 @@ const NameTable<ContactFormulation>& contact_formulation_names()
   return names;
 }
 
+const NameTable<NewtonMethod>& newton_method_names()
+{
+  static const NameTable<NewtonMethod> names{{"full", NewtonMethod::full},
+                                             {"modified", NewtonMethod::modified}};
+  return names;
+}
+
 const NameTable<GeometryKind>& geometry_names()
 {
   static const NameTable<GeometryKind> names{
@@ -696,6 +703,15 @@ void NewtonParameters::declare_parameters(ParameterHandler& prm)
       "to one), results identical run to run. umfpack: UMFPACK, one rank only. mumps: Amesos "
       "MUMPS, distributed; on several ranks its results may differ in the last digits from run "
       "to run.");
+  prm.declare_entry(
+      "method",
+      "full",
+      Patterns::Selection(newton_method_names().selection()),
+      "full: a fresh tangent (assembly and factorization) for every Newton update. modified: the "
+      "tangent of a step's first update also serves its later updates while the active set stays "
+      "the same and each update reduces the residual at least 10 times, else a fresh one is "
+      "taken; the same convergence test, fewer factorizations for nonlinear materials (the "
+      "converged steps differ within the Newton tolerance).");
   prm.leave_subsection();
 }
 
@@ -705,6 +721,7 @@ void NewtonParameters::parse_parameters(ParameterHandler& prm)
   max_iterations     = prm.get_integer("maximum iterations");
   residual_tolerance = get_in_range(prm, "residual tolerance", "Newton", 1e-16, 1e-6);
   direct_solver = direct_solver_names().parse(prm.get("direct solver"), "Newton/direct solver");
+  method        = newton_method_names().parse(prm.get("method"), "Newton/method");
   prm.leave_subsection();
 }
 

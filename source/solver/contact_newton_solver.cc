@@ -10,6 +10,9 @@ namespace
 {
 /// How often the line search halves one Newton update at the most.
 constexpr unsigned int max_backtracks = 10;
+/// Modified Newton: an update with a reused tangent that reduced the residual by less than this
+/// factor is followed by a fresh tangent.
+constexpr double slow_contraction = 0.1;
 } // namespace
 
 template <int dim>
@@ -32,8 +35,10 @@ struct ContactNewtonSolver<dim>::Iteration
   unsigned int linear_solves  = 0;
   /** Backtracking line search: the state before the last update, the update and its fraction. */
   std::optional<StateBeforeUpdate> before_update = {};
-  Vector<double> newton_update                   = {};
-  double step_length                             = 1.;
+  /** Modified Newton: the active set at which this step's tangent was assembled (empty: none). */
+  std::optional<std::vector<bool>> tangent_active_set = {};
+  Vector<double> newton_update                        = {};
+  double step_length                                  = 1.;
 };
 
 template <int dim>
@@ -80,7 +85,8 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
   for (;;)
   {
     TimerOutput::Scope assembly_scope(timer, "assembly");
-    const Evaluation evaluation = evaluate(iteration, with_tangent);
+    const bool reuse_tangent = with_tangent && may_reuse_tangent(iteration);
+    Evaluation evaluation    = evaluate(iteration, with_tangent && !reuse_tangent);
     if (evaluation.failure.empty() && has_converged(iteration, evaluation.figures))
       return {iteration.linear_solves};
     with_tangent = true;
@@ -101,10 +107,36 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
       continue;
     }
     throw_if_stuck(iteration, evaluation);
+    // Modified Newton: the tangent of this step's first update serves the later ones until the
+    // active set changes or an update reduces the residual less than slow_contraction times.
+    if (!reuse_tangent || converging_slowly(iteration, evaluation.figures))
+    {
+      if (reuse_tangent)
+      {
+        evaluation = evaluate(iteration, true); // a fresh tangent at the same iterate
+        throw_if_stuck(iteration, evaluation);
+      }
+      iteration.tangent_active_set = contact.state().active;
+    }
 
     assembly_scope.stop();
     take_newton_update(iteration, evaluation.figures);
   }
+}
+
+template <int dim>
+bool ContactNewtonSolver<dim>::may_reuse_tangent(const Iteration& iteration) const
+{
+  return parameters.method == NewtonMethod::modified && iteration.tangent_active_set &&
+         *iteration.tangent_active_set == contact.state().active;
+}
+
+template <int dim>
+bool ContactNewtonSolver<dim>::converging_slowly(
+    const Iteration& iteration, const typename DynamicResidual<dim>::Figures& figures) const
+{
+  return iteration.before_update &&
+         figures.force_residual > slow_contraction * iteration.before_update->force_residual;
 }
 
 template <int dim>
@@ -144,10 +176,15 @@ bool ContactNewtonSolver<dim>::has_converged(
   // multipliers of the last step still balance it.
   // In the round-off band only once Newton stops converging (class documentation): accepting a
   // residual still falling fast left the recovered contact forces of non-matching spheres
-  // unbalanced by 2e-9 of the peak force, where one more update reaches 1e-11.
+  // unbalanced by 2e-9 of the peak force, where one more update reaches 1e-11. Falling fast means
+  // 1000 times per update for full Newton, and 1 / slow_contraction times for modified Newton
+  // (linear convergence: stopping it early in the band left first-contact forces 1e-7 off).
+  const double fast_contraction =
+      parameters.method == NewtonMethod::modified ? slow_contraction : 1e-3;
   const double tolerance = parameters.residual_tolerance * figures.reference_force;
-  const bool converging  = iteration.before_update &&
-                          figures.force_residual < 1e-3 * iteration.before_update->force_residual;
+  const bool converging =
+      iteration.before_update &&
+      figures.force_residual < fast_contraction * iteration.before_update->force_residual;
   const bool residual_small =
       figures.force_residual <= tolerance ||
       (figures.force_residual <= tolerance + figures.round_off_floor && !converging);

@@ -98,7 +98,8 @@ struct TwoSprings
         *contact,
         mass,
         fixed,
-        NewtonParameters{variant.max_iterations, 1e-12, DirectSolverPackage::klu},
+        NewtonParameters{
+            variant.max_iterations, 1e-12, DirectSolverPackage::klu, NewtonMethod::full},
         1.,
         timer);
   }

@@ -97,11 +97,22 @@ struct ContactParameters
 };
 
 /** Convergence control of the per-step Newton / active-set loop. Subsection `Newton`. */
+/** Newton/method: a fresh tangent for every update, or the step's tangent reused. */
+enum class NewtonMethod
+{
+  full,    ///< the tangent at every iterate (quadratic convergence)
+  modified ///< the tangent of the step's first update while the active set stays (linear rate)
+};
+
+/** The names of Newton/method. */
+const NameTable<NewtonMethod>& newton_method_names();
+
 struct NewtonParameters
 {
   unsigned int max_iterations;
   double residual_tolerance;
   DirectSolverPackage direct_solver;
+  NewtonMethod method;
 
   static void declare_parameters(ParameterHandler& prm);
   void parse_parameters(ParameterHandler& prm);

@@ -139,6 +139,16 @@ private:
   bool has_converged(const Iteration& iteration,
                      const typename DynamicResidual<dim>::Figures& figures) const;
 
+  /**
+   * Modified Newton (Newton/method): whether the tangent assembled earlier in this step, at the
+   * same active set, is still in the matrix and may serve the next update.
+   */
+  bool may_reuse_tangent(const Iteration& iteration) const;
+
+  /** Whether the last update reduced the force residual less than slow_contraction times. */
+  bool converging_slowly(const Iteration& iteration,
+                         const typename DynamicResidual<dim>::Figures& figures) const;
+
   /** Whether the last update is to be halved: its end failed or its merit grew. */
   bool must_backtrack(const Iteration& iteration, const Evaluation& evaluation) const;
 
