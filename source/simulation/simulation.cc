@@ -583,6 +583,12 @@ void Simulation<dim>::write_reference_and_summary()
 }
 
 template <int dim>
+unsigned int Simulation<dim>::n_factorizations() const
+{
+  return solver->n_factorizations();
+}
+
+template <int dim>
 History Simulation<dim>::nominal_history() const
 {
   History nominal(step_history.column_names());
@@ -843,7 +849,7 @@ void Simulation<dim>::finish()
     log << (c == 0 ? " at t = " : ", ") << counters.cut_places[c];
   if (counters.total_cuts > counters.cut_places.size())
     log << ", ...";
-  log << "), " << counters.total_solves << " linear solves (" << solver->n_factorizations()
+  log << "), " << counters.total_solves << " linear solves (" << n_factorizations()
       << " factorizations), wall time " << wall_time << " s (";
   const auto phases = timer.get_summary_data(TimerOutput::total_wall_time);
   for (auto phase = phases.begin(); phase != phases.end(); ++phase)

@@ -85,6 +85,10 @@ public:
    */
   History nominal_history() const;
 
+  /** The numeric factorizations of the Newton matrix so far (Newton/method, Newton/direct solver).
+   */
+  unsigned int n_factorizations() const;
+
   /** Lumped nodal masses per DoF. */
   const Vector<double>& lumped_mass() const { return mass; }
 
