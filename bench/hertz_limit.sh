@@ -123,6 +123,8 @@ echo "[hertz_limit] $n_runs runs in $(($(date +%s) - start_all)) s"
 table=bench/results/hertz_limit.csv
 /usr/bin/python3 - "$results" "$table" "$labels" <<'PY'
 import csv, math, os, re, sys
+sys.path.insert(0, "bench")
+import impact_measures
 
 E, NU, R, V = 5e3, 0.3, 8.0, 1.0
 E1 = E / (1 - NU**2)                 # E1* of one sphere on the rigid plane
@@ -194,26 +196,7 @@ def law_impact(mass):
 
 def measures(times, forces):
     """Peak (parabola) and duration (F^(2/3) extrapolation), as measure_impact() does."""
-    positive = [i for i, f in enumerate(forces) if f > 0]
-    first, last = positive[0], positive[-1]
-    dt = times[1] - times[0]
-    def end(i, j, outside):   # i: the sample at the end, j: its neighbour inside
-        if outside is None:
-            return times[i]   # the history begins (ends) in contact
-        if len(positive) < 2 or forces[j] ** (2 / 3) <= forces[i] ** (2 / 3):
-            return times[outside]
-        y_i, y_j = forces[i] ** (2 / 3), forces[j] ** (2 / 3)
-        zero = times[i] - y_i * (times[j] - times[i]) / (y_j - y_i)
-        return zero if abs(zero - times[i]) <= dt * (1 + 1e-9) else times[outside]
-    start = end(first, first + 1, first - 1 if first > 0 else None)
-    stop = end(last, last - 1, last + 1 if last + 1 < len(times) else None)
-    k = max(range(len(forces)), key=lambda i: forces[i])
-    peak = forces[k]
-    if 0 < k < len(forces) - 1:
-        f0, f1, f2 = forces[k - 1], forces[k], forces[k + 1]
-        curvature = f0 - 2 * f1 + f2
-        if curvature < 0:
-            peak = f1 - (f2 - f0) ** 2 / (8 * curvature)
+    peak, _, start, stop = impact_measures.measures(times, forces)
     return peak, stop - start
 
 

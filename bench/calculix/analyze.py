@@ -21,6 +21,9 @@ import os
 import re
 import sys
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
+import impact_measures  # noqa: E402
+
 SUMMARY_FIELDS = ["label", "rho", "material", "pole_size", "zone_radius", "far_size", "pole_edge",
                   "nodes", "elements", "equations", "dt", "start_time", "end_time", "increments",
                   "iterations", "wall_s", "peak_rss_mb", "peak", "duration", "impulse",
@@ -47,29 +50,9 @@ def read_history(dat, wedge_factor, time_offset):
 
 
 def metrics(t, f):
-    imax = max(range(len(f)), key=lambda i: f[i])
-    peak = f[imax]
-    if 0 < imax < len(f) - 1:
-        f0, f1, f2 = f[imax - 1], f[imax], f[imax + 1]
-        den = f0 - 2 * f1 + f2
-        if den < 0:
-            s = 0.5 * (f0 - f2) / den
-            peak = f1 - 0.25 * (f0 - f2) * s
-    pos = [i for i, v in enumerate(f) if v > 0]
-    first, last = pos[0], pos[-1]
-
-    def crossing(i_a, i_b, lo, hi):
-        # F^(2/3) linear through samples i_a (nearer the edge) and i_b, extrapolated to zero.
-        ga, gb = f[i_a] ** (2 / 3), f[i_b] ** (2 / 3)
-        if gb == ga:
-            return t[i_a]
-        tz = t[i_a] - ga * (t[i_b] - t[i_a]) / (gb - ga)
-        return min(max(tz, lo), hi)
-
-    start = crossing(first, first + 1, t[max(first - 1, 0)], t[first])
-    end = crossing(last, last - 1, t[last], t[min(last + 1, len(t) - 1)])
+    peak, peak_time, start, end = impact_measures.measures(t, f)
     impulse = sum(0.5 * (f[i] + f[i + 1]) * (t[i + 1] - t[i]) for i in range(len(t) - 1))
-    return peak, end - start, impulse, start, end, t[imax]
+    return peak, end - start, impulse, start, end, peak_time
 
 
 def ccx_log_figures(log):
