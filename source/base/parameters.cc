@@ -710,8 +710,9 @@ void NewtonParameters::declare_parameters(ParameterHandler& prm)
       "full: a fresh tangent (assembly and factorization) for every Newton update. modified: the "
       "tangent of a step's first update also serves its later updates while the active set stays "
       "the same and each update reduces the residual at least 10 times, else a fresh one is "
-      "taken; the same convergence test, fewer factorizations for nonlinear materials (the "
-      "converged steps differ within the Newton tolerance).");
+      "taken, and when pairs enter or leave the active set (at most 4 at a time) the factors are "
+      "updated (low-rank) instead of recomputed; the same convergence test, fewer "
+      "factorizations (the converged steps differ within the Newton tolerance).");
   prm.leave_subsection();
 }
 

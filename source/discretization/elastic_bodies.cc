@@ -5,8 +5,10 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/work_stream.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace dyncontact
@@ -38,55 +40,12 @@ PointDisplacement<dim> interpolate_displacement(const std::vector<unsigned int>&
   return result;
 }
 
-/**
- * The nonzero entries of a deformation gradient variation delta F (3 x 3), in row-major order: a
- * shape function's variation has 2 (plane) or 3 (axisymmetric radial: with the hoop term) of the 9.
- */
-struct SparseVariation
-{
-  unsigned int n_entries = 0;
-  unsigned int row[9], column[9];
-  double value[9];
-
-  void set(const Tensor<2, 3>& variation)
-  {
-    n_entries = 0;
-    for (unsigned int a = 0; a < 3; ++a)
-      for (unsigned int b = 0; b < 3; ++b)
-        if (variation[a][b] != 0.)
-        {
-          row[n_entries]    = a;
-          column[n_entries] = b;
-          value[n_entries]  = variation[a][b];
-          ++n_entries;
-        }
-  }
-
-  /**
-   * A : delta F, summed as deal.II's scalar_product() does (over rows, then columns within a
-   * row, from zero): leaving out the zero terms changes no bit of the sum.
-   */
-  double contract(const Tensor<2, 3>& tensor) const
-  {
-    double sum = 0.;
-    for (unsigned int e = 0; e < n_entries;)
-    {
-      const unsigned int a = row[e];
-      double row_sum       = 0.;
-      for (; e < n_entries && row[e] == a; ++e)
-        row_sum += tensor[a][column[e]] * value[e];
-      sum += row_sum;
-    }
-    return sum;
-  }
-};
-
 /** One cell's force vector, tangent matrix and energy, with the work arrays of their integration.
  */
 struct CellContribution
 {
   explicit CellContribution(const unsigned int n_local)
-      : nodal_values(n_local), force(n_local), tangent(n_local, n_local), variations(n_local),
+      : nodal_values(n_local), force(n_local), tangent(n_local, n_local),
         tangent_times_variation(n_local)
   {
   }
@@ -97,7 +56,6 @@ struct CellContribution
   /** W(F) dV at each quadrature point, added to the total one by one in the copier (the same sum
    *  as a single loop over all points). */
   std::vector<double> energies;
-  std::vector<SparseVariation> variations;
   std::vector<Tensor<2, 3>> tangent_times_variation;
   /** The message of a failed material point (an inverted element), empty if none. */
   std::string failure;
@@ -113,30 +71,22 @@ struct NoScratch
 /**
  * Adds one quadrature point's share to a cell's internal force, P : delta F_i dV, and, if
  * `with_tangent`, to its tangent, delta F_i : dP/dF : delta F_j dV; F is the deformation gradient
- * at the point X. The variations are sparse (SparseVariation): only their nonzero entries enter
+ * at the point and `variations` the delta F_i of its n_local DoFs. Only their nonzero entries enter
  * the products, in the order of deal.II's full tensor products, so the sums are the same to the
  * last bit at a small fraction of the work (the tangent's 18 x 729 products per point become
  * about 18 x 27).
  */
-template <int dim>
-void add_point_contribution(const Kinematics<dim>& kinematics,
-                            const Material& material,
-                            const std::vector<unsigned int>& local_component,
-                            const double* shape_values,
-                            const Tensor<1, dim>* shape_gradients,
-                            const Point<dim>& X,
+void add_point_contribution(const Material& material,
+                            const SparseVariation* variations,
+                            const unsigned int n_local,
                             const Tensor<2, 3>& F,
                             const double dV,
                             const bool with_tangent,
                             CellContribution& cell)
 {
-  const unsigned int n_local = local_component.size();
-  const Tensor<2, 3> P       = material.first_piola_kirchhoff_stress(F);
+  const Tensor<2, 3> P = material.first_piola_kirchhoff_stress(F);
   for (unsigned int i = 0; i < n_local; ++i)
-    cell.variations[i].set(kinematics.deformation_gradient_variation(
-        local_component[i], shape_values[i], shape_gradients[i], X));
-  for (unsigned int i = 0; i < n_local; ++i)
-    cell.force[i] += cell.variations[i].contract(P) * dV;
+    cell.force[i] += variations[i].contract(P) * dV;
   if (!with_tangent)
     return;
   const Tensor<4, 3> dP_dF = material.stress_tangent(F);
@@ -147,11 +97,11 @@ void add_point_contribution(const Kinematics<dim>& kinematics,
     Tensor<2, 3>& product = cell.tangent_times_variation[j];
     for (unsigned int k = 0; k < 3; ++k)
       for (unsigned int l = 0; l < 3; ++l)
-        product[k][l] = cell.variations[j].contract(dP_dF[k][l]);
+        product[k][l] = variations[j].contract(dP_dF[k][l]);
   }
   for (unsigned int i = 0; i < n_local; ++i)
     for (unsigned int j = 0; j < n_local; ++j)
-      cell.tangent(i, j) += cell.variations[i].contract(cell.tangent_times_variation[j]) * dV;
+      cell.tangent(i, j) += variations[i].contract(cell.tangent_times_variation[j]) * dV;
 }
 } // namespace
 
@@ -189,7 +139,8 @@ ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
                   std::vector<Point<dim>>(n_q),
                   std::vector<double>(n_q),
                   std::vector<double>(n_q * n_local),
-                  std::vector<Tensor<1, dim>>(n_q * n_local)};
+                  std::vector<Tensor<1, dim>>(n_q * n_local),
+                  std::vector<SparseVariation>(n_q * n_local)};
     cell->get_dof_indices(data.dofs);
     for (unsigned int q = 0; q < n_q; ++q)
     {
@@ -199,9 +150,34 @@ ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
       {
         data.shape_values[q * n_local + i]    = fe_values.shape_value(i, q);
         data.shape_gradients[q * n_local + i] = fe_values.shape_grad(i, q);
+        data.variations[q * n_local + i] =
+            SparseVariation(kinematics.deformation_gradient_variation(local_component[i],
+                                                                      fe_values.shape_value(i, q),
+                                                                      fe_values.shape_grad(i, q),
+                                                                      data.points[q]));
       }
     }
     cells.push_back(std::move(data));
+  }
+
+  if (std::all_of(this->bodies.begin(),
+                  this->bodies.end(),
+                  [](const BodyMaterial& body) { return body.material->is_linear(); }))
+  {
+    DynamicSparsityPattern couplings(dof_handler.n_dofs());
+    for (const CellData& cell : cells)
+    {
+      linear_tangent_rows.insert(linear_tangent_rows.end(), cell.dofs.begin(), cell.dofs.end());
+      for (const auto row : cell.dofs)
+        for (const auto column : cell.dofs)
+          couplings.add(row, column);
+    }
+    std::sort(linear_tangent_rows.begin(), linear_tangent_rows.end());
+    linear_tangent_rows.erase(std::unique(linear_tangent_rows.begin(), linear_tangent_rows.end()),
+                              linear_tangent_rows.end());
+    linear_tangent_pattern.copy_from(couplings);
+    linear_tangent.reinit(linear_tangent_pattern);
+    integrate(Vector<double>(dof_handler.n_dofs()), nullptr, &linear_tangent, nullptr);
   }
 }
 
@@ -263,21 +239,49 @@ void ElasticBodies<dim>::assemble_internal_force(const Vector<double>& displacem
                                                  TrilinosWrappers::SparseMatrix* tangent,
                                                  double* strain_energy) const
 {
-  integrate(displacement, &internal_force, tangent, strain_energy);
+  if (linear_tangent.empty())
+    integrate(displacement, &internal_force, tangent, strain_energy);
+  else
+  {
+    integrate(
+        displacement, &internal_force, static_cast<SparseMatrix<double>*>(nullptr), strain_energy);
+    if (tangent != nullptr)
+      add_linear_tangent(*tangent);
+  }
 }
 
 template <int dim>
 double ElasticBodies<dim>::strain_energy(const Vector<double>& displacement) const
 {
   double energy = 0.;
-  integrate(displacement, nullptr, nullptr, &energy);
+  integrate(displacement, nullptr, static_cast<SparseMatrix<double>*>(nullptr), &energy);
   return energy;
 }
 
 template <int dim>
+void ElasticBodies<dim>::add_linear_tangent(TrilinosWrappers::SparseMatrix& tangent) const
+{
+  std::vector<types::global_dof_index> columns;
+  std::vector<double> values;
+  for (const auto row : linear_tangent_rows)
+  {
+    columns.clear();
+    values.clear();
+    for (auto entry = linear_tangent.begin(row); entry != linear_tangent.end(row); ++entry)
+    {
+      columns.push_back(entry->column());
+      values.push_back(entry->value());
+    }
+    if (!columns.empty())
+      tangent.add(row, columns.size(), columns.data(), values.data(), false, false);
+  }
+}
+
+template <int dim>
+template <typename MatrixType>
 void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
                                    Vector<double>* internal_force,
-                                   TrilinosWrappers::SparseMatrix* tangent,
+                                   MatrixType* tangent,
                                    double* strain_energy) const
 {
   const unsigned int n_local = local_component.size();
@@ -316,16 +320,8 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
         if (strain_energy != nullptr)
           copy.energies[q] = material.strain_energy_density(F) * dV;
         if (internal_force != nullptr || tangent != nullptr)
-          add_point_contribution(kinematics,
-                                 material,
-                                 local_component,
-                                 values,
-                                 gradients,
-                                 X,
-                                 F,
-                                 dV,
-                                 tangent != nullptr,
-                                 copy);
+          add_point_contribution(
+              material, &cell->variations[q * n_local], n_local, F, dV, tangent != nullptr, copy);
       }
     }
     catch (const SolverFailure& error)

@@ -850,7 +850,8 @@ void Simulation<dim>::finish()
   if (counters.total_cuts > counters.cut_places.size())
     log << ", ...";
   log << "), " << counters.total_solves << " linear solves (" << n_factorizations()
-      << " factorizations), wall time " << wall_time << " s (";
+      << " factorizations, " << solver->n_low_rank_updates() << " low-rank updates), wall time "
+      << wall_time << " s (";
   const auto phases = timer.get_summary_data(TimerOutput::total_wall_time);
   for (auto phase = phases.begin(); phase != phases.end(); ++phase)
     log << (phase == phases.begin() ? "" : ", ") << phase->first << " " << phase->second << " s";

@@ -239,10 +239,9 @@ void ContactNewtonSolver<dim>::take_newton_update(
 {
   Vector<double> right_hand_side = residual.residual();
   right_hand_side *= -1.;
-  {
-    TimerOutput::Scope factorization_scope(timer, "factorization");
-    system.factorize_if_changed();
-  }
+  // Modified Newton reuses what it can: low-rank updates of the factors for pairs entering or
+  // leaving; full Newton keeps fresh factorizations of every changed tangent (the reference).
+  system.update_factorization(parameters.method == NewtonMethod::modified, &timer);
   {
     TimerOutput::Scope solve_scope(timer, "linear solve");
     iteration.newton_update = system.solve(right_hand_side);

@@ -2,9 +2,11 @@
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <Epetra_CrsMatrix.h>
+#include <algorithm>
 #include <cmath>
 
 namespace dyncontact
@@ -63,11 +65,11 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
                                           const std::vector<types::global_dof_index>& fixed_dofs,
                                           const DirectSolverPackage package)
     : communicator(dof_handler.get_triangulation().get_communicator()),
+      n_dofs(dof_handler.n_dofs()),
       multiplier_rows_owner(Utilities::MPI::this_mpi_process(communicator) ==
                             Utilities::MPI::n_mpi_processes(communicator) - 1),
       locally_owned_dofs(dof_handler.locally_owned_dofs()), direct_solver(package, communicator)
 {
-  const types::global_dof_index n_dofs  = dof_handler.n_dofs();
   const types::global_dof_index n_total = n_dofs + contact.n_pairs();
   locally_owned_rows.set_size(n_total);
   locally_owned_rows.add_indices(locally_owned_dofs);
@@ -113,44 +115,160 @@ double SaddlePointSystem<dim>::largest_displacement_diagonal() const
 }
 
 template <int dim>
-bool SaddlePointSystem<dim>::factorize_if_changed()
+std::vector<double> SaddlePointSystem<dim>::local_values() const
 {
   const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
-  bool changed                   = factorized_values.empty();
-  std::size_t k                  = 0;
-  for (int row = 0; row < matrix.NumMyRows() && !changed; ++row)
-  {
-    int n_entries;
-    double* values;
-    matrix.ExtractMyRowView(row, n_entries, values);
-    // Bit for bit: != is false only for equal numbers (a NaN always counts as a change).
-    for (int i = 0; i < n_entries && !changed; ++i, ++k)
-      changed = values[i] != factorized_values[k];
-  }
-  if (Utilities::MPI::max(static_cast<int>(changed), communicator) == 0)
-    return false;
-  factorized_values.clear();
+  std::vector<double> values;
+  values.reserve(matrix.NumMyNonzeros());
   for (int row = 0; row < matrix.NumMyRows(); ++row)
   {
     int n_entries;
-    double* values;
-    matrix.ExtractMyRowView(row, n_entries, values);
-    factorized_values.insert(factorized_values.end(), values, values + n_entries);
+    double* row_values;
+    matrix.ExtractMyRowView(row, n_entries, row_values);
+    values.insert(values.end(), row_values, row_values + n_entries);
   }
+  return values;
+}
+
+template <int dim>
+typename SaddlePointSystem<dim>::Update
+SaddlePointSystem<dim>::update_factorization(const bool allow_low_rank, TimerOutput* timer)
+{
+  std::vector<double> values = local_values();
+  // Bit for bit: == is true only for equal numbers (a NaN always counts as a change).
+  const bool changed = factorized_values.empty() || values != served_values;
+  if (Utilities::MPI::max(static_cast<int>(changed), communicator) == 0)
+    return Update::none;
+  served_values                   = std::move(values);
+  const bool is_factorized_matrix = served_values == factorized_values;
+  if (Utilities::MPI::min(static_cast<int>(is_factorized_matrix), communicator) == 1)
+  {
+    low_rank.reset(); // back to the factorized matrix (e.g. the active set of the factorization)
+    return Update::none;
+  }
+  std::optional<TimerOutput::Scope> scope;
+  if (allow_low_rank && !factorized_values.empty())
+  {
+    if (timer != nullptr)
+      scope.emplace(*timer, "low-rank update");
+    low_rank = low_rank_update_of_changes();
+    if (low_rank)
+    {
+      ++low_rank_updates;
+      return Update::low_rank;
+    }
+  }
+  if (timer != nullptr)
+    scope.emplace(*timer, "factorization");
+  low_rank.reset();
+  factorized_values.clear();
   try
   {
     direct_solver.factorize(system_matrix);
   }
   catch (const SolverFailure&)
   {
-    factorized_values.clear(); // no valid factorization
+    served_values.clear(); // no valid factorization
     throw;
   }
-  return true;
+  factorized_values = served_values;
+  return Update::factorization;
+}
+
+template <int dim>
+std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes()
+{
+  // The changed entries (row, column, new - factorized) of this rank's rows; any change in the
+  // leading block, or a change that is not a number, calls for a factorization.
+  struct Change
+  {
+    types::global_dof_index row, column;
+    double difference;
+  };
+  std::vector<Change> changes;
+  bool leading_block_changed     = false;
+  const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
+  std::size_t k                  = 0;
+  for (int row = 0; row < matrix.NumMyRows(); ++row)
+  {
+    int n_entries;
+    double* row_values;
+    int* columns;
+    matrix.ExtractMyRowView(row, n_entries, row_values, columns);
+    for (int i = 0; i < n_entries; ++i, ++k)
+      if (served_values[k] != factorized_values[k])
+      {
+        const Change change{
+            static_cast<types::global_dof_index>(TrilinosWrappers::global_row_index(matrix, row)),
+            static_cast<types::global_dof_index>(
+                TrilinosWrappers::global_column_index(matrix, columns[i])),
+            served_values[k] - factorized_values[k]};
+        leading_block_changed = leading_block_changed || !std::isfinite(change.difference) ||
+                                (change.row < n_dofs && change.column < n_dofs);
+        changes.push_back(change);
+      }
+  }
+  if (Utilities::MPI::max(static_cast<int>(leading_block_changed), communicator) > 0)
+    return {};
+  // The multipliers whose rows and columns hold the changes, on all ranks.
+  std::vector<types::global_dof_index> local_pairs;
+  for (const Change& change : changes)
+    local_pairs.push_back(change.row >= n_dofs ? change.row : change.column);
+  std::vector<types::global_dof_index> pairs;
+  for (const auto& rank_pairs : Utilities::MPI::all_gather(communicator, local_pairs))
+    pairs.insert(pairs.end(), rank_pairs.begin(), rank_pairs.end());
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  if (pairs.empty() || pairs.size() > max_low_rank_pairs)
+    return {};
+
+  // dA = sum_j e_j (row j of dA)^T + sum_j (column j of dA outside the rows j) e_j^T over the
+  // multipliers j: U = [e_j, column_j], V = [row_j, e_j].
+  const unsigned int m = pairs.size();
+  const auto n_total   = system_matrix.m();
+  const auto index_of  = [&](const types::global_dof_index pair)
+  { return std::lower_bound(pairs.begin(), pairs.end(), pair) - pairs.begin(); };
+  std::vector<Vector<double>> columns_u(2 * m, Vector<double>(n_total));
+  std::vector<Vector<double>> columns_v(2 * m, Vector<double>(n_total));
+  for (const Change& change : changes)
+    if (change.row >= n_dofs)
+      columns_v[index_of(change.row)][change.column] += change.difference;
+    else
+      columns_u[m + index_of(change.column)][change.row] += change.difference;
+  for (auto& column : columns_u)
+    Utilities::MPI::sum(ArrayView<const double>(column.begin(), column.size()),
+                        communicator,
+                        ArrayView<double>(column.begin(), column.size()));
+  for (auto& column : columns_v)
+    Utilities::MPI::sum(ArrayView<const double>(column.begin(), column.size()),
+                        communicator,
+                        ArrayView<double>(column.begin(), column.size()));
+  for (unsigned int j = 0; j < m; ++j)
+  {
+    columns_u[j][pairs[j]]     = 1.;
+    columns_v[m + j][pairs[j]] = 1.;
+  }
+  try
+  {
+    return LowRankUpdate(columns_u,
+                         std::move(columns_v),
+                         [this](const Vector<double>& b) { return solve_with_factors(b); });
+  }
+  catch (const SolverFailure&)
+  {
+    return {}; // ill-conditioned: factorize instead
+  }
 }
 
 template <int dim>
 Vector<double> SaddlePointSystem<dim>::solve(const Vector<double>& right_hand_side)
+{
+  Vector<double> solution = solve_with_factors(right_hand_side);
+  return low_rank ? low_rank->correct(solution) : solution;
+}
+
+template <int dim>
+Vector<double> SaddlePointSystem<dim>::solve_with_factors(const Vector<double>& right_hand_side)
 {
   TrilinosWrappers::MPI::Vector distributed_rhs(locally_owned_rows, communicator);
   TrilinosWrappers::MPI::Vector distributed_solution(locally_owned_rows, communicator);

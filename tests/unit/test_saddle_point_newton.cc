@@ -46,7 +46,11 @@ namespace dyncontact::testing
 namespace
 {
 constexpr double tolerance = 1e-13; // see the file comment
-constexpr double gap0      = 0.5;
+using Update               = SaddlePointSystem<1>::Update;
+/** Every direct solver package, each test's systems solved by each. */
+constexpr DirectSolverPackage all_packages[] = {
+    DirectSolverPackage::klu, DirectSolverPackage::umfpack, DirectSolverPackage::mumps};
+constexpr double gap0 = 0.5;
 
 /** The variations of the problem of the file comment. */
 struct Variant
@@ -213,6 +217,32 @@ std::string solver_failure(const std::function<void()>& run)
   ADD_FAILURE() << "no SolverFailure";
   return "";
 }
+/**
+ * The saddle-point matrix of SystemSolvesAKnownSaddlePointAndClearsFixedRows times `scale`, with
+ * the constraint row and column (+1 at a, -1 at b) times `constraint_scale`, into `system`.
+ */
+void assemble_known_system(const TwoSprings& springs,
+                           const double scale,
+                           const double constraint_scale,
+                           SaddlePointSystem<1>& system)
+{
+  const types::global_dof_index a = springs.a, b = springs.b, lambda = springs.dof_handler.n_dofs();
+  system.start_assembly();
+  auto& matrix = system.matrix();
+  for (const auto& [free, fixed] : {std::pair{a, springs.fixed[0]}, std::pair{b, springs.fixed[1]}})
+  {
+    matrix.add(free, free, 4. * scale);
+    matrix.add(free, fixed, -3. * scale);
+    matrix.add(fixed, free, -3. * scale);
+    matrix.add(fixed, fixed, 3. * scale);
+  }
+  for (const auto& [dof, sign] : {std::pair{a, 1.}, std::pair{b, -1.}})
+  {
+    matrix.add(lambda, dof, sign * scale * constraint_scale);
+    matrix.add(dof, lambda, sign * scale * constraint_scale);
+  }
+  system.finish_assembly(2. * scale);
+}
 } // namespace
 
 TEST(SaddlePointNewton, LumpedMassIsTheHandValue)
@@ -235,8 +265,7 @@ TEST(SaddlePointNewton, LumpedMassIsTheHandValue)
 TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePointAndClearsFixedRows)
 {
   const TwoSprings springs;
-  for (const auto package :
-       {DirectSolverPackage::klu, DirectSolverPackage::umfpack, DirectSolverPackage::mumps})
+  for (const auto package : all_packages)
   {
     SCOPED_TRACE(direct_solver_names().name(package));
     SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed, package);
@@ -245,22 +274,7 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePointAndClearsFixedRows)
                                   lambda  = springs.dof_handler.n_dofs();
     const types::global_dof_index fixed_a = springs.fixed[0], fixed_b = springs.fixed[1];
     const auto assemble = [&](const double scale)
-    {
-      system.start_assembly();
-      auto& matrix = system.matrix();
-      for (const auto& [free, fixed] : {std::pair{a, fixed_a}, std::pair{b, fixed_b}})
-      {
-        matrix.add(free, free, 4. * scale);
-        matrix.add(free, fixed, -3. * scale);
-        matrix.add(fixed, free, -3. * scale);
-        matrix.add(fixed, fixed, 3. * scale);
-      }
-      matrix.add(lambda, a, 1. * scale);
-      matrix.add(a, lambda, 1. * scale);
-      matrix.add(lambda, b, -1. * scale);
-      matrix.add(b, lambda, -1. * scale);
-      system.finish_assembly(2. * scale);
-    };
+    { assemble_known_system(springs, scale, 1., system); };
     assemble(1.);
     EXPECT_EQ(system.largest_displacement_diagonal(), 4.);
 
@@ -270,7 +284,7 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePointAndClearsFixedRows)
     right_hand_side[fixed_a] = 0.3;
     right_hand_side[fixed_b] = 0.3;
     right_hand_side[lambda]  = 0.5;
-    EXPECT_TRUE(system.factorize_if_changed());
+    EXPECT_EQ(system.update_factorization(true), Update::factorization);
     const Vector<double> solution = system.solve(right_hand_side);
     EXPECT_NEAR(solution[a], 0.25, tolerance);
     EXPECT_NEAR(solution[b], -0.25, tolerance);
@@ -279,14 +293,14 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePointAndClearsFixedRows)
     EXPECT_NEAR(solution[fixed_b], 0.15, tolerance);
 
     assemble(1.);
-    EXPECT_FALSE(system.factorize_if_changed());
+    EXPECT_EQ(system.update_factorization(true), Update::none);
     const Vector<double> again = system.solve(right_hand_side);
     for (unsigned int i = 0; i < solution.size(); ++i)
       EXPECT_EQ(again[i], solution[i]);
     EXPECT_EQ(system.n_factorizations(), 1u);
 
     assemble(2.);
-    EXPECT_TRUE(system.factorize_if_changed());
+    EXPECT_EQ(system.update_factorization(true), Update::factorization);
     const Vector<double> half = system.solve(right_hand_side);
     for (unsigned int i = 0; i < solution.size(); ++i)
       EXPECT_NEAR(half[i], 0.5 * solution[i], tolerance);
@@ -294,16 +308,65 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePointAndClearsFixedRows)
   }
 }
 
+// A change in the constraint row and column only (the multiplier's coefficients tripled, as when
+// a pair's normal or active set changes) is served by a low-rank update of the factors, which
+// solves the changed system as a fresh factorization does: to the LU round-off of the file
+// comment (the Woodbury correction adds a 2 x 2 solve of O(1) numbers), while the stale factors
+// would be off by more than 0.1 in a, b and lambda. Assembling the factorized matrix again returns
+// to the factors as they are; a change of the leading block needs a factorization.
+TEST(SaddlePointNewton, ConstraintRowChangeIsALowRankUpdateOfTheFactors)
+{
+  const TwoSprings springs;
+  for (const auto package : all_packages)
+  {
+    SCOPED_TRACE(direct_solver_names().name(package));
+    SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed, package);
+    SaddlePointSystem<1> fresh(springs.dof_handler, *springs.contact, springs.fixed, package);
+    Vector<double> right_hand_side(springs.dof_handler.n_dofs() + 1);
+    right_hand_side[springs.a]                    = 1.55;
+    right_hand_side[springs.b]                    = -2.45;
+    right_hand_side[springs.fixed[0]]             = 0.3;
+    right_hand_side[springs.fixed[1]]             = 0.3;
+    right_hand_side[springs.dof_handler.n_dofs()] = 0.5;
+
+    assemble_known_system(springs, 1., 1., system);
+    EXPECT_EQ(system.update_factorization(true), Update::factorization);
+    const Vector<double> stale = system.solve(right_hand_side);
+
+    assemble_known_system(springs, 1., 3., system);
+    EXPECT_EQ(system.update_factorization(true), Update::low_rank);
+    assemble_known_system(springs, 1., 3., fresh);
+    EXPECT_EQ(fresh.update_factorization(true), Update::factorization);
+    const Vector<double> updated  = system.solve(right_hand_side);
+    const Vector<double> expected = fresh.solve(right_hand_side);
+    for (unsigned int i = 0; i < expected.size(); ++i)
+      EXPECT_NEAR(updated[i], expected[i], tolerance) << "unknown " << i;
+    for (const auto i : {springs.a, springs.b, springs.dof_handler.n_dofs()})
+      EXPECT_GT(std::abs(stale[i] - expected[i]), 0.1) << "unknown " << i;
+    EXPECT_EQ(system.n_factorizations(), 1u);
+    EXPECT_EQ(system.n_low_rank_updates(), 1u);
+
+    assemble_known_system(springs, 1., 1., system);
+    EXPECT_EQ(system.update_factorization(true), Update::none);
+    const Vector<double> back = system.solve(right_hand_side);
+    for (unsigned int i = 0; i < back.size(); ++i)
+      EXPECT_EQ(back[i], stale[i]);
+
+    assemble_known_system(springs, 2., 1., system);
+    EXPECT_EQ(system.update_factorization(true), Update::factorization);
+    EXPECT_EQ(system.n_factorizations(), 2u);
+  }
+}
+
 TEST(SaddlePointNewton, SingularSystemIsASolverFailure)
 {
   const TwoSprings springs;
-  for (const auto package :
-       {DirectSolverPackage::klu, DirectSolverPackage::umfpack, DirectSolverPackage::mumps})
+  for (const auto package : all_packages)
   {
     SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed, package);
     system.start_assembly();
     system.finish_assembly(0.); // all zero
-    const std::string message = solver_failure([&] { system.factorize_if_changed(); });
+    const std::string message = solver_failure([&] { system.update_factorization(true); });
     EXPECT_EQ(message.rfind("the direct solver (", 0), 0u) << message;
   }
 }

@@ -101,7 +101,8 @@ struct ContactParameters
 enum class NewtonMethod
 {
   full,    ///< the tangent at every iterate (quadratic convergence)
-  modified ///< the tangent of the step's first update while the active set stays (linear rate)
+  modified ///< the tangent of the step's first update while the active set stays (linear rate),
+           ///< low-rank updates of the factors for active-set changes
 };
 
 /** The names of Newton/method. */

@@ -2,10 +2,13 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/discretization/kinematics.h>
+#include <dyncontact/discretization/sparse_variation.h>
 #include <dyncontact/material/material.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -38,12 +41,21 @@ struct BodyMaterial
  *
  * Speed: the reference configuration never moves (total Lagrangian), so the shape values and
  * gradients, the points and the weights dV = JxW times the kinematics' measure factor at every
- * quadrature point of every locally owned cell are computed once, at construction (about 4 KB per
- * Q2 cell: 100 MB for 200k DoFs), and each evaluation is arithmetic on them. The cells are
+ * quadrature point of every locally owned cell, with each shape function's deformation gradient
+ * variation (SparseVariation), are computed once, at construction (about 9 KB per axisymmetric Q2
+ * cell: 200 MB for 200k DoFs), and each evaluation is arithmetic on them. The cells are
  * integrated on the threads of deal.II's MultithreadInfo (WorkStream); their contributions are
  * added to the global vector, matrix and energy in cell order, so this integration gives the same
  * bits on any number of threads. (The executable runs one thread: with two, the bar histories
  * differed from t = 0 in the kinetic energy, outside this class; not yet traced.)
+ *
+ * Linear bodies: if every body's material is linear (Material::is_linear(); the kinematics give
+ * F = I + a term linear in u), the tangent dQ/du = K is constant: it is integrated once at
+ * construction (this rank's cells' share, entries summed in cell order as in every assembly, so
+ * the same bits) and each tangent is a copy of it. Q(u) itself is still integrated point by point
+ * rather than taken as K u: the product K u of a large rigid translation (the spheres move by 2
+ * before they touch) leaves round-off forces of eps |K| |u| that do not balance, and in 800
+ * free-flight steps they changed the momentum by 4e-10 of itself; the quadrature's stay balanced.
  */
 template <int dim>
 class ElasticBodies
@@ -74,23 +86,31 @@ private:
   /** Adds `values` over all MPI ranks, in place. */
   void sum_over_ranks(Vector<double>& values) const;
 
-  /** One pass over all quadrature points filling whichever of the outputs is not null. */
+  /**
+   * One pass over all quadrature points filling whichever of the outputs is not null; `tangent`
+   * is a TrilinosWrappers::SparseMatrix or (for K of linear bodies) a SparseMatrix<double>.
+   */
+  template <typename MatrixType>
   void integrate(const Vector<double>& displacement,
                  Vector<double>* internal_force,
-                 TrilinosWrappers::SparseMatrix* tangent,
+                 MatrixType* tangent,
                  double* strain_energy) const;
+
+  /** Linear bodies: adds K (this rank's share) into `tangent`. */
+  void add_linear_tangent(TrilinosWrappers::SparseMatrix& tangent) const;
 
   /** A locally owned cell's reference data at its quadrature points (class documentation). */
   struct CellData
   {
     types::material_id body;
     std::vector<types::global_dof_index> dofs;
-    /** Per quadrature point q: X_q, dV_q; shape value and gradient of local DoF i at index
-     *  q * n_local + i. */
+    /** Per quadrature point q: X_q, dV_q; shape value, gradient and delta F of local DoF i at
+     *  index q * n_local + i. */
     std::vector<Point<dim>> points;
     std::vector<double> volumes;
     std::vector<double> shape_values;
     std::vector<Tensor<1, dim>> shape_gradients;
+    std::vector<SparseVariation> variations;
   };
 
   const DoFHandler<dim>& dof_handler;
@@ -100,5 +120,12 @@ private:
   /** The FE component of each local DoF. */
   std::vector<unsigned int> local_component;
   std::vector<CellData> cells;
+  /** Linear bodies: K integrated over this rank's cells (rows of other ranks' DoFs included);
+   *  empty (0 x 0) otherwise. */
+  SparsityPattern linear_tangent_pattern;
+  SparseMatrix<double> linear_tangent;
+  /** The rows of K with entries: the DoFs of this rank's cells (the pattern also holds an empty
+   *  diagonal in every other row, which the tangent of another rank's rows must not get). */
+  std::vector<types::global_dof_index> linear_tangent_rows;
 };
 } // namespace dyncontact

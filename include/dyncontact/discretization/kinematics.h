@@ -22,7 +22,10 @@ class Kinematics
 public:
   virtual ~Kinematics() = default;
 
-  /** F from the displacement gradient and value at reference point X. */
+  /**
+   * F from the displacement gradient and value at reference point X: I plus a term linear in
+   * them (every kinematics here), so that a linear material gives a force linear in u.
+   */
   virtual Tensor<2, 3> deformation_gradient(const Tensor<2, dim>& displacement_gradient,
                                             const Tensor<1, dim>& displacement,
                                             const Point<dim>& X) const = 0;

@@ -28,6 +28,13 @@ public:
 
   /** dP/dF, with (dP/dF)_{ijkl} = d P_ij / d F_kl. */
   virtual Tensor<4, 3> stress_tangent(const Tensor<2, 3>& F) const = 0;
+
+  /**
+   * Whether P is linear in the displacement gradient: P(F) = C : (F - I) with a constant C, so
+   * that W is quadratic in it. A body of such a material has the internal force K u with a
+   * constant stiffness matrix K (ElasticBodies uses it). False unless a law says otherwise.
+   */
+  virtual bool is_linear() const { return false; }
 };
 
 /**
@@ -58,6 +65,8 @@ public:
 
   double strain_energy_density(const Tensor<2, 3>& F) const override;
   Tensor<2, 3> first_piola_kirchhoff_stress(const Tensor<2, 3>& F) const override;
+  /** True: P = lambda tr(eps) I + 2 mu eps with eps = sym(F - I). */
+  bool is_linear() const override { return true; }
   Tensor<4, 3> stress_tangent(const Tensor<2, 3>& F) const override;
 
 private:

@@ -73,8 +73,8 @@ public:
    * relative tolerance, plus the round-off floor 1e3 eps, into the gap tolerance used for
    * activation and constraint convergence (without the floor a tolerance of 1e-16 asked for gaps
    * below the round-off of the positions: measured 8.9e-16 left vs 3.2e-17 asked).
-   * `timer` receives the phases "assembly", "factorization" and "linear solve" (the triangular
-   * solves with the factors).
+   * `timer` receives the phases "assembly", "factorization", "low-rank update" (of the factors,
+   * SaddlePointSystem::update_factorization()) and "linear solve" (with the factors).
    */
   ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
                       const ElasticBodies<dim>& bodies,
@@ -119,6 +119,9 @@ public:
 
   /** The numeric factorizations so far (a matrix that did not change is not refactorized). */
   unsigned int n_factorizations() const { return system.n_factorizations(); }
+
+  /** The number of low-rank updates of a factorization so far (SaddlePointSystem). */
+  unsigned int n_low_rank_updates() const { return system.n_low_rank_updates(); }
 
   /** Strain energy at the same displacement as internal_force(). */
   double strain_energy() const { return residual.strain_energy(); }

@@ -3,12 +3,15 @@
 #include <dyncontact/base/global.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/solver/direct_solver.h>
+#include <dyncontact/solver/low_rank_update.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <optional>
 #include <vector>
 
 namespace dyncontact
@@ -28,10 +31,15 @@ namespace dyncontact
  * out are whole (all n_dofs + n_pairs entries) on every rank.
  *
  * The direct solve keeps its factorization (DirectSolver, symbolic analysis once for the fixed
- * pattern): factorize_if_changed() factorizes only if an assembly changed any entry since the
- * last factorization (compared bit for bit), so a matrix that stays the same from one Newton
- * iteration or step to the next (linear material, the same active set and pairs) is factorized
- * once, and the solution is the same to the last bit as with a fresh factorization.
+ * pattern); update_factorization() brings it up to date with the assembled matrix at the least
+ * cost, comparing the entries bit for bit with those factorized:
+ * - none changed (linear material, the same active set and pairs): the factors serve as they
+ *   are, and the solution is the same to the last bit as with a fresh factorization;
+ * - only entries in the rows and columns of at most max_low_rank_pairs multipliers changed (pairs
+ *   that entered or left the active set, with a linear material or a reused tangent): a
+ *   LowRankUpdate of the factors (Sherman-Morrison-Woodbury; 2 solves per changed pair instead of
+ *   a factorization, the solution equal to round-off);
+ * - otherwise: a new numeric factorization.
  *
  * Rows of fixed DoFs (e.g. u_r = 0 on a symmetry axis) are replaced by a diagonal row on
  * finish_assembly(), so that a zero right-hand side there gives a zero increment.
@@ -93,24 +101,57 @@ public:
   double largest_displacement_diagonal() const;
 
   /**
-   * Factorizes the matrix unless its entries are bit for bit those of the last factorization
-   * (collective); returns whether it factorized. Throws SolverFailure if the factorization fails,
-   * e.g. for a singular matrix.
+   * A low-rank update serves a matrix whose changes since the last factorization lie in the rows
+   * and columns of at most this many multipliers (2 solves each: 8 solves cost about half a
+   * factorization of the 13k-DoF spheres).
    */
-  bool factorize_if_changed();
+  static constexpr unsigned int max_low_rank_pairs = 4;
+
+  /** What update_factorization() did. */
+  enum class Update
+  {
+    none,          ///< the matrix is the one the solver already serves
+    low_rank,      ///< a low-rank update of the last factorization
+    factorization, ///< a new numeric factorization
+  };
 
   /**
-   * Solves matrix * solution = right_hand_side with the last factorization (factorize_if_changed()
-   * must have been called since the last assembly); both vectors have n_dofs + n_pairs entries
-   * and are whole on every rank. Throws SolverFailure if the solve fails.
+   * Brings the solver up to date with the assembled matrix (class documentation; collective) and
+   * says how; a low-rank update only if `allow_low_rank` (else any change is factorized, and the
+   * solutions are those of fresh factorizations to the last bit). The time goes to the phase
+   * "factorization" or "low-rank update" of `timer` if given. Throws SolverFailure if the
+   * factorization fails, e.g. for a singular matrix.
+   */
+  Update update_factorization(bool allow_low_rank, TimerOutput* timer = nullptr);
+
+  /**
+   * Solves matrix * solution = right_hand_side with the solver of the last update_factorization()
+   * (which must have been called since the last assembly); both vectors have n_dofs + n_pairs
+   * entries and are whole on every rank. Throws SolverFailure if the solve fails.
    */
   Vector<double> solve(const Vector<double>& right_hand_side);
 
   /** The number of numeric factorizations so far. */
   unsigned int n_factorizations() const { return direct_solver.n_factorizations(); }
 
+  /** The number of low-rank updates so far. */
+  unsigned int n_low_rank_updates() const { return low_rank_updates; }
+
 private:
+  /** This rank's matrix entries, row by row. */
+  std::vector<double> local_values() const;
+
+  /**
+   * The low-rank update from the factorized matrix to the assembled one, if the changes qualify
+   * (class documentation) and the update is well conditioned; empty otherwise. Collective.
+   */
+  std::optional<LowRankUpdate> low_rank_update_of_changes();
+
+  /** solution = A0^{-1} right_hand_side with the factors alone (whole vectors). */
+  Vector<double> solve_with_factors(const Vector<double>& right_hand_side);
+
   const MPI_Comm communicator;
+  const types::global_dof_index n_dofs;
   const bool multiplier_rows_owner;
   /** The locally owned DoFs of the DoFHandler (the displacement rows of this rank). */
   const IndexSet locally_owned_dofs;
@@ -121,5 +162,10 @@ private:
   DirectSolver direct_solver;
   /** This rank's matrix entries (row by row) at the last factorization; empty before the first. */
   std::vector<double> factorized_values;
+  /** This rank's matrix entries at the last update_factorization(). */
+  std::vector<double> served_values;
+  /** The update from the factorized matrix to the served one, if it is not the factorized one. */
+  std::optional<LowRankUpdate> low_rank;
+  unsigned int low_rank_updates = 0;
 };
 } // namespace dyncontact

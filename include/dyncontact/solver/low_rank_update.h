@@ -1,0 +1,52 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <Eigen/Dense>
+#include <functional>
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * The solution of (A0 + U V^T) x = b for a few columns U, V (n x k each, k small) from a solver of
+ * A0 alone, by the Sherman-Morrison-Woodbury formula
+ *
+ *   x = y - Z (I_k + V^T Z)^{-1} V^T y,   y = A0^{-1} b,   Z = A0^{-1} U.
+ *
+ * Z (k solves with A0) and the LU factors of the k x k capacitance matrix I_k + V^T Z (Eigen) are
+ * computed at construction; each correct() is then k dot products and k vector updates. It serves
+ * SaddlePointSystem, whose matrix changes in a few multiplier rows and columns when contact pairs
+ * enter or leave the active set: a rank-2 change per pair instead of a new factorization.
+ * Vectors are whole (all n entries) on every MPI rank, so every rank computes the same x.
+ */
+class LowRankUpdate
+{
+public:
+  /** y = A0^{-1} b for whole vectors of n entries. */
+  using Solver = std::function<Vector<double>(const Vector<double>&)>;
+
+  /**
+   * `columns_u` and `columns_v`: the k columns of U and V, n entries each (k >= 1, the same k).
+   * Calls `solve_a0` k times. Throws SolverFailure if the capacitance matrix is singular or so
+   * ill-conditioned (reciprocal condition number below 1e-12) that the formula would lose the
+   * solution's digits; the caller then factorizes A0 + U V^T itself.
+   */
+  LowRankUpdate(const std::vector<Vector<double>>& columns_u,
+                std::vector<Vector<double>> columns_v,
+                const Solver& solve_a0);
+
+  /** x = (A0 + U V^T)^{-1} b from y = A0^{-1} b (n entries). */
+  Vector<double> correct(const Vector<double>& y) const;
+
+  /** k, the number of columns of U and V. */
+  unsigned int rank() const { return columns_v.size(); }
+
+private:
+  std::vector<Vector<double>> columns_z;
+  std::vector<Vector<double>> columns_v;
+  Eigen::PartialPivLU<Eigen::MatrixXd> capacitance;
+};
+} // namespace dyncontact
