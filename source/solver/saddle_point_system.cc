@@ -189,7 +189,7 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
   bool leading_block_changed     = false;
   const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
   std::size_t k                  = 0;
-  for (int row = 0; row < matrix.NumMyRows(); ++row)
+  for (int row = 0; row < matrix.NumMyRows() && !leading_block_changed; ++row)
   {
     int n_entries;
     double* row_values;

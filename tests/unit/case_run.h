@@ -58,6 +58,15 @@ BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>&
 MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
 
 /**
+ * The overrides that put prm/spheres_rho0.001.prm (graded mesh, node-to-segment, modified Newton)
+ * on the paper's structured coarse mesh, as the tests were written for: meshes/two_spheres.geo
+ * Refinement 0 (432 cells, pole edge 0.26) with `geo_prefix` before its parameters (e.g.
+ * "CentreZ: -10, "), node-to-node pairs and full Newton; then `more`.
+ */
+std::vector<std::string> paper_coarse_spheres(const std::vector<std::string>& more = {},
+                                              const std::string& geo_prefix = "");
+
+/**
  * History rows strictly inside the exact contact interval (first interface), minus the samples
  * taken exactly at a jump of the exact tip velocities or contact force. At such an instant the
  * exact solution is a step seen from one side (right-continuous) while the discrete solution is

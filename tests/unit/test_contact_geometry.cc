@@ -24,7 +24,7 @@ TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
 {
   const RunParameters parameters =
       ParameterReader(source_path("prm/spheres_rho0.001.prm"),
-                      {"Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3"})
+                      paper_coarse_spheres())
           .parameters();
   AxisymmetricMeshModel model(parameters.mesh, parameters.bodies);
   Triangulation<2> triangulation;

@@ -25,6 +25,7 @@ std::vector<std::string> non_matching(const std::string& dynamics)
   return {"Mesh/file=" + source_path("meshes/two_spheres_nonmatching.geo"),
           "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3",
           "Contact/discretization=node-to-segment",
+          "Newton/method=full",
           "Contact/dynamics=" + dynamics};
 }
 

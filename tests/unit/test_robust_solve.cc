@@ -16,8 +16,6 @@ namespace dyncontact::testing
 namespace
 {
 const std::string spheres = "prm/spheres_rho0.001.prm";
-const std::string coarse_mesh =
-    "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3";
 
 /** The checked physics of a finished run, each relative to its natural scale. */
 struct PhysicsFigures
@@ -93,11 +91,11 @@ ImpactMeasures measure(const History& history)
 // stays within 1 % of the tight-tolerance (1e-10) run's.
 TEST(RobustSolve, EveryNewtonToleranceKeepsEnergyForceAndMomentum)
 {
-  const double reference_peak = measure(run_mesh_case(spheres, {coarse_mesh}).history()).peak_force;
+  const double reference_peak = measure(run_mesh_case(spheres, paper_coarse_spheres()).history()).peak_force;
   for (const std::string tolerance : {"1e-16", "1e-12", "1e-8", "1e-6"})
   {
     const MeshRun sphere_run =
-        run_mesh_case(spheres, {coarse_mesh, "Newton/residual tolerance=" + tolerance});
+        run_mesh_case(spheres, paper_coarse_spheres({"Newton/residual tolerance=" + tolerance}));
     expect_physics(physics_figures(sphere_run.history()), "coarse spheres, tolerance " + tolerance);
     EXPECT_NEAR(measure(sphere_run.history()).peak_force / reference_peak, 1., 0.01) << tolerance;
     const BarRun bar_run =
@@ -121,7 +119,7 @@ TEST(RobustSolve, DissimilarSpheresCompleteAndMatchHertz)
   {
     const double e1   = ratio * e2;
     const MeshRun run = run_mesh_case(
-        spheres, {coarse_mesh, "Bodies/Body 1/Young's modulus=" + std::to_string(e1)});
+        spheres, paper_coarse_spheres({"Bodies/Body 1/Young's modulus=" + std::to_string(e1)}));
     const HertzImpact hertz = HertzImpact::two_spheres(
         ElasticSphere{8., e1, nu, 0.001}, ElasticSphere{8., e2, nu, 0.001}, 2., 2.);
     const ImpactMeasures computed = measure(run.history());
@@ -149,7 +147,7 @@ TEST(RobustSolve, CoarseTimeStepsNeverGainEnergyOrRebound)
   {
     const MeshRun run = run_mesh_case(
         spheres,
-        {coarse_mesh, "Time integration/time step=" + dt, "Time integration/end time=2.16"});
+        paper_coarse_spheres({"Time integration/time step=" + dt, "Time integration/end time=2.16"}));
     const History& history = run.history();
     expect_physics(physics_figures(history), "dt = " + dt);
     const unsigned int last = history.n_rows() - 1;

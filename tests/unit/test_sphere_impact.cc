@@ -21,17 +21,14 @@ namespace
 /** The paper's spheres of section 6.4 at rho = 0.001 (prm/spheres_rho0.001.prm). */
 const ElasticSphere paper_sphere{8., 5e3, 0.3, 1e-3};
 
-/** Coarse: 432 cells, pole edge 0.26, 5 surface nodes inside the Hertz radius 0.47 (rho = 0.001).
- */
-const std::string coarse_mesh =
-    "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3";
+// The coarse mesh of paper_coarse_spheres(): 432 cells, pole edge 0.26, 5 surface nodes inside
+// the Hertz radius 0.47 (rho = 0.001).
 
 std::vector<std::string> linear_elastic(const std::string& dynamics)
 {
-  return {coarse_mesh,
-          "Contact/dynamics=" + dynamics,
-          "Bodies/Body 1/material=linear elastic",
-          "Bodies/Body 2/material=linear elastic"};
+  return paper_coarse_spheres({"Contact/dynamics=" + dynamics,
+                               "Bodies/Body 1/material=linear elastic",
+                               "Bodies/Body 2/material=linear elastic"});
 }
 
 ImpactMeasures measure(const MeshRun& run)
@@ -84,7 +81,7 @@ const std::string mid_contact = "2.04";
 const MeshRun& soft_impact()
 {
   static const MeshRun run = run_mesh_case("prm/spheres_rho0.001.prm",
-                                           {coarse_mesh, "Output/profile times=" + mid_contact});
+                                           paper_coarse_spheres({"Output/profile times=" + mid_contact}));
   return run;
 }
 
@@ -266,7 +263,7 @@ TEST(SphereImpact, PenaltyContactMatchesHertzWithinMeshBands)
   // The penalty formulation (with the classical scheme, see doc/method.md) on the coarse mesh.
   const MeshRun run =
       run_mesh_case("prm/spheres_rho0.001.prm",
-                    {coarse_mesh, "Contact/dynamics=none", "Contact/formulation=penalty"});
+                    paper_coarse_spheres({"Contact/dynamics=none", "Contact/formulation=penalty"}));
   const HertzImpact hertz          = HertzImpact::two_spheres(paper_sphere, paper_sphere, 2., 2.);
   const ImpactMeasures computed    = measure(run);
   const auto penetration           = run.history().column("max_penetration");
@@ -297,9 +294,9 @@ namespace dyncontact::testing
 // cli.modified_newton_matches_full_newton).
 TEST(SphereImpact, ModifiedNewtonFactorizesLessForTheSameImpact)
 {
-  const MeshRun full = run_mesh_case("prm/spheres_rho0.001.prm", {coarse_mesh});
+  const MeshRun full = run_mesh_case("prm/spheres_rho0.001.prm", paper_coarse_spheres());
   const MeshRun modified =
-      run_mesh_case("prm/spheres_rho0.001.prm", {coarse_mesh, "Newton/method=modified"});
+      run_mesh_case("prm/spheres_rho0.001.prm", paper_coarse_spheres({"Newton/method=modified"}));
   const unsigned int full_factorizations     = full.simulation->n_factorizations();
   const unsigned int modified_factorizations = modified.simulation->n_factorizations();
   const double full_peak = measure(full).peak_force, modified_peak = measure(modified).peak_force;
