@@ -10,14 +10,21 @@ cmake --build build -j2 --target dyncontact >/dev/null
 
 # One two-sphere impact run of build/dyncontact on one rank into a fresh output directory (results
 # of an earlier run there are removed first, so that a failed run leaves nothing to tabulate): the
-# graded mesh family at the given refinement, the given material for both bodies, no VTU. Extra
-# arguments go to dyncontact. The log goes to output.log; a failure is reported, with status 1.
+# structured mesh family (PoleGrading 10) at the given refinement, the given material for both
+# bodies, no VTU. prm/spheres_rho0.001.prm, whose default is the graded mesh, is put back on the
+# paper's meshes/two_spheres.geo with node-to-node pairs and full Newton. Extra arguments go to
+# dyncontact. The log goes to output.log; a failure is reported, with status 1.
 run_sphere_impact() # output prm refinement material extra-arguments...
 {
   local output=$1 prm=$2 refinement=$3 material=$4
   shift 4
+  local structured=()
+  if [ "$prm" = prm/spheres_rho0.001.prm ]; then
+    structured=(--set "Mesh/file=../meshes/two_spheres.geo"
+      --set "Contact/discretization=node-to-node" --set "Newton/method=full")
+  fi
   rm -rf "$output" "$output.log"
-  if ! build/dyncontact "$prm" --output "$output" \
+  if ! build/dyncontact "$prm" --output "$output" "${structured[@]}" \
     --set "Mesh/geo parameters=Refinement: $refinement, PoleGrading: 10, CoreOffset: 0.3" \
     --set "Bodies/Body 1/material=$material" --set "Bodies/Body 2/material=$material" \
     --set "Output/vtu interval=0" "$@" >"$output.log" 2>&1; then

@@ -12,6 +12,7 @@
 #   graded_P  meshes/two_spheres_graded.geo with PoleSize P (node-to-segment), linear elastic;
 #   graded_P_neo  the same mesh, neo-Hookean;
 #   structured_rN  meshes/two_spheres.geo Refinement N (node-to-node, the meshes before issue 13).
+# All with modified Newton (the prm's) and SOLVER (klu, the default, or mumps) as direct solver.
 # CASES (space-separated names) runs a subset; CALCULIX=1 (default) adds bench/calculix/run.sh
 # (the same impact as one sphere on the rigid symmetry plane, CAX8, penalty 50 E). Writes bench/results/performance.csv and
 # prints the markdown table.
@@ -30,7 +31,8 @@ case_arguments() # name -> the dyncontact arguments of the case, one per line
 {
   local name=$1 material="linear elastic"
   case $name in *_neo) material=neo-hookean ;; esac
-  printf '%s\n' --set "Bodies/Body 1/material=$material" --set "Bodies/Body 2/material=$material"
+  printf '%s\n' --set "Bodies/Body 1/material=$material" --set "Bodies/Body 2/material=$material" \
+    --set "Newton/direct solver=${SOLVER:-klu}"
   case $name in
     graded_*)
       local pole=${name#graded_}
@@ -39,7 +41,9 @@ case_arguments() # name -> the dyncontact arguments of the case, one per line
         --set "Mesh/geo parameters=PoleSize: $pole" \
         --set "Contact/discretization=node-to-segment" ;;
     structured_r*)
-      printf '%s\n' --set "Mesh/geo parameters=Refinement: ${name#structured_r}, PoleGrading: 10, CoreOffset: 0.3" ;;
+      printf '%s\n' --set "Mesh/file=../meshes/two_spheres.geo" \
+        --set "Mesh/geo parameters=Refinement: ${name#structured_r}, PoleGrading: 10, CoreOffset: 0.3" \
+        --set "Contact/discretization=node-to-node" ;;
   esac
 }
 

@@ -2,7 +2,7 @@
 """Tabulates bench/performance.sh: one row per case (markdown to stdout, CSV beside the results).
 
 Usage: performance_table.py RESULTS_DIR CASE...
-Per case: min and median wall time over its runs, DoFs, steps, linear solves, factorizations, the
+Per case: min and median wall time over its runs (of the whole process, /usr/bin/time), DoFs, steps, linear solves, factorizations, the
 phases of the fastest run, peak RSS, and peak force / duration / impulse against Hertz, the
 finite-sphere law and the finest run of the same material (the case with the most DoFs).
 A CalculiX row is added for each bench/results/calculix/performance_*/summary.csv
@@ -20,20 +20,25 @@ names = sys.argv[2:]
 
 def parse_run(directory):
     log = (directory / "run.log").read_text(errors="replace")
-    done = re.search(r"done, (\d+) steps .*?, (\d+) linear solves \((\d+) factorizations\), "
-                     r"wall time ([0-9.e+-]+) s \((.*?)\)\. Results", log)
+    done = re.search(r"done, (\d+) steps .*?, (\d+) linear solves \((\d+) factorizations, "
+                     r"(\d+) low-rank updates\), wall time ([0-9.e+-]+) s \((.*?)\)\. Results", log)
     if not done:
         return None
     phases = dict((name.strip(), float(value)) for name, value in
-                  re.findall(r"([a-z ]+) ([0-9.e+-]+) s", done.group(5)))
+                  re.findall(r"([a-z -]+) ([0-9.e+-]+) s", done.group(6)))
     dofs = re.search(r"(\d+) displacement DoFs", log)
-    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)",
-                    (directory / "time.log").read_text())
+    time_log = (directory / "time.log").read_text()
+    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", time_log)
+    # The process's wall time (set-up and meshing included, as CalculiX's), not the done line's.
+    elapsed = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): (?:(\d+):)?(\d+):([0-9.]+)",
+                        time_log)
     summary = {}
     for row in csv.DictReader(open(directory / "impact_summary.csv")):
         summary[row["quantity"]] = row
     return {"steps": int(done.group(1)), "solves": int(done.group(2)),
-            "factorizations": int(done.group(3)), "wall": float(done.group(4)),
+            "factorizations": int(done.group(3)), "low_rank_updates": int(done.group(4)),
+            "wall": (3600 * int(elapsed.group(1) or 0) + 60 * int(elapsed.group(2)) +
+                     float(elapsed.group(3))) if elapsed else float(done.group(5)),
             "phases": phases, "dofs": int(dofs.group(1)) if dofs else 0,
             "rss_mb": int(rss.group(1)) / 1024 if rss else 0, "summary": summary}
 
@@ -59,11 +64,12 @@ for name, runs in cases.items():
     row = {"case": name, "material": material(name), "dofs": fastest["dofs"],
            "steps": fastest["steps"], "solves": fastest["solves"],
            "factorizations": fastest["factorizations"],
+           "low_rank_updates": fastest["low_rank_updates"],
            "wall_min_s": fastest["wall"],
            "wall_median_s": statistics.median(r["wall"] for r in runs),
            "runs": len(runs), "rss_mb": round(max(r["rss_mb"] for r in runs))}
     for phase, seconds in fastest["phases"].items():
-        row["phase_" + phase.replace(" ", "_") + "_s"] = seconds
+        row["phase_" + phase.replace(" ", "_").replace("-", "_") + "_s"] = seconds
     for quantity in ("peak_force", "duration", "impulse"):
         computed = float(summary[quantity]["computed"])
         row[quantity] = computed
@@ -92,15 +98,16 @@ with open(root.parent / "performance.csv", "w", newline="") as handle:
     writer.writerows(rows)
 
 pct = lambda row, key: f"{100 * row[key]:+.3f} %" if key in row else ""
-print("| case | DoFs | wall min / median [s] | solves / factorizations | assembly / factorization / "
-      "solve [s] | RSS [MB] | peak vs finest | duration vs finest | peak vs Hertz | peak vs law | "
+print("| case | DoFs | wall min / median [s] | solves / factorizations / low-rank | assembly / "
+      "factorization / low-rank / solve [s] | RSS [MB] | peak vs finest | duration vs finest | peak vs Hertz | peak vs law | "
       "duration vs law |")
 print("|---|---|---|---|---|---|---|---|---|---|---|")
 for row in rows:
     phases = " / ".join(f"{row.get('phase_' + p + '_s', 0):.2f}"
-                        for p in ("assembly", "factorization", "linear_solve"))
+                        for p in ("assembly", "factorization", "low_rank_update", "linear_solve"))
     print(f"| {row['case']} | {row['dofs']} | {row['wall_min_s']:.2f} / {row['wall_median_s']:.2f} | "
-          f"{row.get('solves', '')} / {row.get('factorizations', '')} | {phases} | {row['rss_mb']} | "
+          f"{row.get('solves', '')} / {row.get('factorizations', '')} / "
+          f"{row.get('low_rank_updates', '')} | {phases} | {row['rss_mb']} | "
           f"{pct(row, 'peak_force_vs_finest')} | {pct(row, 'duration_vs_finest')} | "
           f"{pct(row, 'peak_force_vs_hertz')} | {pct(row, 'peak_force_vs_law')} | "
           f"{pct(row, 'duration_vs_law')} |")

@@ -856,6 +856,13 @@ void Simulation<dim>::finish()
   for (auto phase = phases.begin(); phase != phases.end(); ++phase)
     log << (phase == phases.begin() ? "" : ", ") << phase->first << " " << phase->second << " s";
   log << "). Results in " << parameters.output.directory << "\n";
+  log << "dyncontact: cost per step";
+  for (const bool in_contact : {false, true})
+    log << (in_contact ? ", " : " ")
+        << 1e3 * progress.step_wall[in_contact] / std::max(progress.step_count[in_contact], 1u)
+        << " ms " << (in_contact ? "with" : "without") << " active pairs ("
+        << progress.step_count[in_contact] << " steps)";
+  log << "\n";
 }
 
 template <int dim>
@@ -864,6 +871,7 @@ void Simulation<dim>::run(const std::string& resume_directory)
   start(resume_directory);
   while (!controller->finished())
   {
+    const auto step_start           = std::chrono::steady_clock::now();
     const State before              = current_state();
     const unsigned int nominal_step = controller->nominal_step();
     Measures measures;
@@ -877,6 +885,10 @@ void Simulation<dim>::run(const std::string& resume_directory)
     checkpoint_or_stop(nominal_time_reached, nominal_step);
     const auto active_before =
         std::count(before.contact.active.begin(), before.contact.active.end(), true);
+    const bool in_contact = active_before > 0 || contact->n_active() > 0;
+    progress.step_wall[in_contact] +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - step_start).count();
+    ++progress.step_count[in_contact];
     report_progress(nominal_step, static_cast<long>(contact->n_active()) != active_before);
   }
   finish();

@@ -84,6 +84,14 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
   bool with_tangent = residual.tangent_scale() == 0.;
   for (;;)
   {
+    // An initial guess with active pairs is never the answer (has_converged() asks for a linear
+    // solve then): restart at once, without the evaluation (a residual pass per contact step).
+    if (!iteration.before_update && !iteration.restarted && contact.n_active() > 0)
+    {
+      with_tangent = true;
+      restart(iteration, restart_increment);
+      continue;
+    }
     TimerOutput::Scope assembly_scope(timer, "assembly");
     const bool reuse_tangent = with_tangent && may_reuse_tangent(iteration);
     Evaluation evaluation    = evaluate(iteration, with_tangent && !reuse_tangent);
@@ -95,9 +103,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     // converged configuration instead. See the class documentation for why not from the guess.
     if (!iteration.before_update && !iteration.restarted)
     {
-      iteration.restarted = true;
-      iteration.increment = restart_increment;
-      enter(iteration);
+      restart(iteration, restart_increment);
       continue;
     }
     if (must_backtrack(iteration, evaluation))
@@ -122,6 +128,15 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     assembly_scope.stop();
     take_newton_update(iteration, evaluation.figures);
   }
+}
+
+template <int dim>
+void ContactNewtonSolver<dim>::restart(Iteration& iteration,
+                                       const Vector<double>& restart_increment)
+{
+  iteration.restarted = true;
+  iteration.increment = restart_increment;
+  enter(iteration);
 }
 
 template <int dim>

@@ -204,6 +204,10 @@ private:
     std::chrono::steady_clock::time_point wall_start, last_report;
     unsigned int steps_this_run = 0;
     double start_fraction       = 0.; ///< of the run, done before this one started (resume)
+    /** Wall time [s] and number of the steps of this run without ([0]) and with ([1]) active
+     *  pairs at their start or end, for the cost per step in the final lines. */
+    double step_wall[2]        = {0., 0.};
+    unsigned int step_count[2] = {0, 0};
   };
 
   /** Counters for the progress line and the summary. */

@@ -135,6 +135,9 @@ private:
   /** Sets the displacement to predictor + increment and updates the active set there. */
   void enter(Iteration& iteration);
 
+  /** Newton starts again from `restart_increment` (the last converged configuration). */
+  void restart(Iteration& iteration, const Vector<double>& restart_increment);
+
   /** The residual (with the tangent if `with_tangent`) at the iterate; catches SolverFailure. */
   Evaluation evaluate(const Iteration& iteration, bool with_tangent);
 
