@@ -6,6 +6,7 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
+#include <Amesos_Mumps.h>
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <Teuchos_ParameterList.hpp>
@@ -54,10 +55,12 @@ void check(const int error_code, const char* package, const char* phase)
 DirectSolver::DirectSolver(const DirectSolverPackage package, const MPI_Comm communicator)
     : package(package)
 {
-  if (package == DirectSolverPackage::umfpack && Utilities::MPI::n_mpi_processes(communicator) > 1)
+  if (package == DirectSolverPackage::umfpack &&
+      dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
     throw InputError("Newton/direct solver = 'umfpack' runs on one MPI rank only: choose 'klu' or "
                      "'mumps' for " +
-                     std::to_string(Utilities::MPI::n_mpi_processes(communicator)) + " ranks.");
+                     std::to_string(dealii::Utilities::MPI::n_mpi_processes(communicator)) +
+                     " ranks.");
 }
 
 DirectSolver::~DirectSolver() = default;
@@ -100,6 +103,11 @@ void DirectSolver::factorize(const TrilinosWrappers::SparseMatrix& matrix)
         throw SolverFailure(std::string("the direct solver ") + name + " is not available");
       Teuchos::ParameterList parameters;
       check(amesos->SetParameters(parameters), name, "setup");
+      // MUMPS orders with METIS (ICNTL(7) = 5) rather than its automatic choice: the
+      // factorizations of the two-sphere meshes took 13 % (56k DoFs) and 18 % (223k) less time,
+      // measured back to back (SCOTCH as METIS, PORD 24 % more).
+      if (auto* mumps = dynamic_cast<Amesos_Mumps*>(amesos.get()))
+        mumps->SetICNTL(7, 5);
       check(amesos->SymbolicFactorization(), name, "symbolic factorization");
     }
     check(amesos->NumericFactorization(), name, "numeric factorization");
