@@ -10,37 +10,27 @@ A CalculiX row is added for each bench/results/calculix/performance_*/summary.cs
 """
 import csv
 import pathlib
-import re
 import statistics
 import sys
+
+import run_log
 
 root = pathlib.Path(sys.argv[1])
 names = sys.argv[2:]
 
 
 def parse_run(directory):
-    log = (directory / "run.log").read_text(errors="replace")
-    done = re.search(r"done, (\d+) steps .*?, (\d+) linear solves \((\d+) factorizations, "
-                     r"(\d+) low-rank updates\), wall time ([0-9.e+-]+) s \((.*?)\)\. Results", log)
-    if not done:
+    run = run_log.parse_log((directory / "run.log").read_text(errors="replace"))
+    if not run:
         return None
-    phases = dict((name.strip(), float(value)) for name, value in
-                  re.findall(r"([a-z -]+) ([0-9.e+-]+) s", done.group(6)))
-    dofs = re.search(r"(\d+) displacement DoFs", log)
-    time_log = (directory / "time.log").read_text()
-    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)", time_log)
+    process = run_log.parse_time_log((directory / "time.log").read_text())
     # The process's wall time (set-up and meshing included, as CalculiX's), not the done line's.
-    elapsed = re.search(r"Elapsed \(wall clock\) time \(h:mm:ss or m:ss\): (?:(\d+):)?(\d+):([0-9.]+)",
-                        time_log)
-    summary = {}
+    run["wall"] = process["elapsed"] or run["wall"]
+    run["rss_mb"] = process["rss_mb"] or 0
+    run["summary"] = {}
     for row in csv.DictReader(open(directory / "impact_summary.csv")):
-        summary[row["quantity"]] = row
-    return {"steps": int(done.group(1)), "solves": int(done.group(2)),
-            "factorizations": int(done.group(3)), "low_rank_updates": int(done.group(4)),
-            "wall": (3600 * int(elapsed.group(1) or 0) + 60 * int(elapsed.group(2)) +
-                     float(elapsed.group(3))) if elapsed else float(done.group(5)),
-            "phases": phases, "dofs": int(dofs.group(1)) if dofs else 0,
-            "rss_mb": int(rss.group(1)) / 1024 if rss else 0, "summary": summary}
+        run["summary"][row["quantity"]] = row
+    return run
 
 
 cases = {}

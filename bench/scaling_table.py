@@ -6,24 +6,17 @@ Usage: scaling_table.py RESULTS_DIR
 """
 import math
 import pathlib
-import re
 import sys
+
+import run_log
 
 root = pathlib.Path(sys.argv[1])
 
 
 def parse(name):
-    log = (root / f"{name}.log").read_text()
-    done = re.search(r"done, (\d+) steps .*?, (\d+) linear solves \((\d+) factorizations, "
-                     r"(\d+) low-rank updates\), wall time ([0-9.e+-]+) s \((.*?)\)\. Results", log)
-    dofs = re.search(r"(\d+) displacement DoFs", log)
-    rss = re.search(r"Maximum resident set size \(kbytes\): (\d+)",
-                    (root / f"{name}.time").read_text())
-    phases = dict((n.strip(), float(v)) for n, v in
-                  re.findall(r"([a-z -]+) ([0-9.e+-]+) s", done.group(6)))
-    return {"steps": int(done.group(1)), "solves": int(done.group(2)),
-            "factorizations": int(done.group(3)), "wall": float(done.group(5)),
-            "dofs": int(dofs.group(1)), "rss_mb": int(rss.group(1)) / 1024, "phases": phases}
+    run = run_log.parse_log((root / f"{name}.log").read_text())
+    run["rss_mb"] = run_log.parse_time_log((root / f"{name}.time").read_text())["rss_mb"]
+    return run
 
 
 def exponent(xs, ys):

@@ -1,6 +1,6 @@
+#include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 
-#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/work_stream.h>
@@ -219,18 +219,8 @@ Vector<double> ElasticBodies<dim>::lumped_mass() const
       mass[local_dofs[i]] +=
           consistent_diagonal[i] * cell_mass / diagonal_sum[fe.system_to_component_index(i).first];
   }
-  sum_over_ranks(mass);
+  sum_over_ranks(mass, dof_handler.get_triangulation().get_communicator());
   return mass;
-}
-
-template <int dim>
-void ElasticBodies<dim>::sum_over_ranks(Vector<double>& values) const
-{
-  const MPI_Comm communicator = dof_handler.get_triangulation().get_communicator();
-  // deal.II allows the input and output views to be the same memory (MPI_IN_PLACE).
-  Utilities::MPI::sum(ArrayView<const double>(values.begin(), values.size()),
-                      communicator,
-                      ArrayView<double>(values.begin(), values.size()));
 }
 
 template <int dim>
@@ -355,7 +345,7 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
                   CellContribution(n_local));
 
   if (internal_force != nullptr)
-    sum_over_ranks(*internal_force);
+    sum_over_ranks(*internal_force, dof_handler.get_triangulation().get_communicator());
   if (strain_energy != nullptr)
     *strain_energy =
         Utilities::MPI::sum(*strain_energy, dof_handler.get_triangulation().get_communicator());

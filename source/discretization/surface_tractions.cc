@@ -1,6 +1,6 @@
+#include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/discretization/surface_tractions.h>
 
-#include <deal.II/base/array_view.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -53,10 +53,7 @@ Vector<double> SurfaceTractions<dim>::force(const double time) const
           }
         }
   }
-  const MPI_Comm communicator = dof_handler.get_triangulation().get_communicator();
-  Utilities::MPI::sum(ArrayView<const double>(force.begin(), force.size()),
-                      communicator,
-                      ArrayView<double>(force.begin(), force.size()));
+  sum_over_ranks(force, dof_handler.get_triangulation().get_communicator());
   return force;
 }
 

@@ -1,3 +1,4 @@
+#include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/solver/saddle_point_system.h>
 
 #include <deal.II/base/mpi.h>
@@ -235,14 +236,9 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
       columns_v[index_of(change.row)][change.column] += change.difference;
     else
       columns_u[m + index_of(change.column)][change.row] += change.difference;
-  for (auto& column : columns_u)
-    Utilities::MPI::sum(ArrayView<const double>(column.begin(), column.size()),
-                        communicator,
-                        ArrayView<double>(column.begin(), column.size()));
-  for (auto& column : columns_v)
-    Utilities::MPI::sum(ArrayView<const double>(column.begin(), column.size()),
-                        communicator,
-                        ArrayView<double>(column.begin(), column.size()));
+  for (auto* columns : {&columns_u, &columns_v})
+    for (auto& column : *columns)
+      sum_over_ranks(column, communicator);
   for (unsigned int j = 0; j < m; ++j)
   {
     columns_u[j][pairs[j]]     = 1.;

@@ -92,11 +92,11 @@ BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>&
 std::vector<std::string> paper_coarse_spheres(const std::vector<std::string>& more,
                                               const std::string& geo_prefix)
 {
-  std::vector<std::string> overrides = {
-      "Mesh/file=" + source_path("meshes/two_spheres.geo"),
-      "Mesh/geo parameters=" + geo_prefix + "Refinement: 0, PoleGrading: 10, CoreOffset: 0.3",
-      "Contact/discretization=node-to-node",
-      "Newton/method=full"};
+  std::vector<std::string> overrides = {"Mesh/file=" + source_path("meshes/two_spheres.geo"),
+                                        "Mesh/geo parameters=" + geo_prefix +
+                                            "Refinement: 0, PoleGrading: 10, CoreOffset: 0.3",
+                                        "Contact/discretization=node-to-node",
+                                        "Newton/method=full"};
   overrides.insert(overrides.end(), more.begin(), more.end());
   return overrides;
 }

@@ -64,7 +64,7 @@ MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string
  * "CentreZ: -10, "), node-to-node pairs and full Newton; then `more`.
  */
 std::vector<std::string> paper_coarse_spheres(const std::vector<std::string>& more = {},
-                                              const std::string& geo_prefix = "");
+                                              const std::string& geo_prefix        = "");
 
 /**
  * History rows strictly inside the exact contact interval (first interface), minus the samples

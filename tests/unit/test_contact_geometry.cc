@@ -23,9 +23,7 @@ namespace dyncontact::testing
 TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
 {
   const RunParameters parameters =
-      ParameterReader(source_path("prm/spheres_rho0.001.prm"),
-                      paper_coarse_spheres())
-          .parameters();
+      ParameterReader(source_path("prm/spheres_rho0.001.prm"), paper_coarse_spheres()).parameters();
   AxisymmetricMeshModel model(parameters.mesh, parameters.bodies);
   Triangulation<2> triangulation;
   model.create_triangulation(triangulation);

@@ -33,9 +33,9 @@ struct TwoSpheres
 {
   explicit TwoSpheres(const double centre_distance, const double body_2_shift = 0.)
       : parameters(
-            ParameterReader(source_path("prm/spheres_rho0.001.prm"),
-                            paper_coarse_spheres(
-                                {}, "CentreDistance: " + format_exact(centre_distance) + ", "))
+            ParameterReader(
+                source_path("prm/spheres_rho0.001.prm"),
+                paper_coarse_spheres({}, "CentreDistance: " + format_exact(centre_distance) + ", "))
                 .parameters()),
         model(parameters.mesh, parameters.bodies), dof_handler(triangulation), fe(FE_Q<2>(2), 2),
         mapping(2)

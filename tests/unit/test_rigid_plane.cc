@@ -21,8 +21,8 @@ TEST(RigidPlane, SphereOnPlaneEqualsItsMirroredPair)
 {
   // The coarse member of the graded family, body 1 of two_spheres.geo and sphere.geo alike.
   const std::string coarse = "Refinement: 0, PoleGrading: 10, CoreOffset: 0.3";
-  const MeshRun pair = run_mesh_case("prm/spheres_rho0.001.prm", paper_coarse_spheres());
-  const MeshRun plane = run_mesh_case("prm/sphere_on_rigid_plane.prm",
+  const MeshRun pair       = run_mesh_case("prm/spheres_rho0.001.prm", paper_coarse_spheres());
+  const MeshRun plane      = run_mesh_case("prm/sphere_on_rigid_plane.prm",
                                       {"Mesh/geo parameters=CentreZ: -10, " + coarse});
   ASSERT_EQ(plane.history().n_rows(), pair.history().n_rows());
   // The same equations on the same nodes: the pair's node-to-node constraint n . (u_B - u_A) with
@@ -98,8 +98,7 @@ TEST(RigidPlane, ReferencesAreThoseOfTheMirroredPair)
                                               {"Mesh/geo parameters=CentreZ: -10, " + coarse})
                                   .parameters();
   const RunParameters pair =
-      ParameterReader(source_path("prm/spheres_rho0.001.prm"), paper_coarse_spheres())
-          .parameters();
+      ParameterReader(source_path("prm/spheres_rho0.001.prm"), paper_coarse_spheres()).parameters();
   AxisymmetricMeshModel plane_model(plane.mesh, plane.bodies, plane.contact.pairs);
   AxisymmetricMeshModel pair_model(pair.mesh, pair.bodies, pair.contact.pairs);
   Triangulation<2> plane_mesh, pair_mesh;

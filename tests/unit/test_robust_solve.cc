@@ -91,7 +91,8 @@ ImpactMeasures measure(const History& history)
 // stays within 1 % of the tight-tolerance (1e-10) run's.
 TEST(RobustSolve, EveryNewtonToleranceKeepsEnergyForceAndMomentum)
 {
-  const double reference_peak = measure(run_mesh_case(spheres, paper_coarse_spheres()).history()).peak_force;
+  const double reference_peak =
+      measure(run_mesh_case(spheres, paper_coarse_spheres()).history()).peak_force;
   for (const std::string tolerance : {"1e-16", "1e-12", "1e-8", "1e-6"})
   {
     const MeshRun sphere_run =
@@ -145,9 +146,9 @@ TEST(RobustSolve, CoarseTimeStepsNeverGainEnergyOrRebound)
 {
   for (const std::string dt : {"0.03", "0.02", "0.015", "0.01"})
   {
-    const MeshRun run = run_mesh_case(
-        spheres,
-        paper_coarse_spheres({"Time integration/time step=" + dt, "Time integration/end time=2.16"}));
+    const MeshRun run      = run_mesh_case(spheres,
+                                      paper_coarse_spheres({"Time integration/time step=" + dt,
+                                                                 "Time integration/end time=2.16"}));
     const History& history = run.history();
     expect_physics(physics_figures(history), "dt = " + dt);
     const unsigned int last = history.n_rows() - 1;

@@ -80,8 +80,8 @@ const std::string mid_contact = "2.04";
  */
 const MeshRun& soft_impact()
 {
-  static const MeshRun run = run_mesh_case("prm/spheres_rho0.001.prm",
-                                           paper_coarse_spheres({"Output/profile times=" + mid_contact}));
+  static const MeshRun run = run_mesh_case(
+      "prm/spheres_rho0.001.prm", paper_coarse_spheres({"Output/profile times=" + mid_contact}));
   return run;
 }
 

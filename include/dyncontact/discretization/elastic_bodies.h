@@ -83,9 +83,6 @@ public:
   double strain_energy(const Vector<double>& displacement) const;
 
 private:
-  /** Adds `values` over all MPI ranks, in place. */
-  void sum_over_ranks(Vector<double>& values) const;
-
   /**
    * One pass over all quadrature points filling whichever of the outputs is not null; `tangent`
    * is a TrilinosWrappers::SparseMatrix or (for K of linear bodies) a SparseMatrix<double>.
