@@ -610,7 +610,10 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
                     "taylor-papadopoulos: the paper's modified Newmark (Taylor & Papadopoulos "
                     "1993, eqs. 19-24): after each step the normal velocity and acceleration of "
                     "every active pair are made continuous, conserving momentum; needs Lagrange "
-                    "multipliers.");
+                    "multipliers. mass-redistribution: the nodes that can come into contact carry "
+                    "no mass, each cell's mass going to its other nodes (Khenous, Laborde & "
+                    "Renard 2008); the contact force is then the adjacent elements' elastic "
+                    "force, without the oscillation of massive contact nodes.");
   prm.declare_entry("formulation",
                     "lagrange multiplier",
                     Patterns::Selection(contact_formulation_names().selection()),

@@ -63,6 +63,22 @@ double ContactConstraints<dim>::gap(const unsigned int pair_index,
 }
 
 template <int dim>
+template <typename Function>
+void ContactConstraints<dim>::for_each_coupled_dof(const unsigned int k, const Function& f) const
+{
+  if (geometry != nullptr)
+    for (const auto dof : geometry->coupled_dofs(k))
+      f(dof);
+  else
+    pairs[k].for_each_node(
+        [&](const Node<dim>& node, double)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            f(node.dofs[d]);
+        });
+}
+
+template <int dim>
 void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern& sparsity,
                                               const types::global_dof_index n_dofs) const
 {
@@ -70,22 +86,22 @@ void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern& sparsity,
   {
     const types::global_dof_index row = n_dofs + k;
     sparsity.add(row, row);
-    const auto add = [&](const types::global_dof_index dof)
-    {
-      sparsity.add(row, dof);
-      sparsity.add(dof, row);
-    };
-    if (geometry != nullptr)
-      for (const auto dof : geometry->coupled_dofs(k))
-        add(dof);
-    else
-      pairs[k].for_each_node(
-          [&](const Node<dim>& node, double)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              add(node.dofs[d]);
-          });
+    for_each_coupled_dof(k,
+                         [&](const types::global_dof_index dof)
+                         {
+                           sparsity.add(row, dof);
+                           sparsity.add(dof, row);
+                         });
   }
+}
+
+template <int dim>
+std::vector<bool> ContactConstraints<dim>::contact_dofs(const types::global_dof_index n_dofs) const
+{
+  std::vector<bool> flags(n_dofs, false);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    for_each_coupled_dof(k, [&](const types::global_dof_index dof) { flags[dof] = true; });
+  return flags;
 }
 
 template <int dim>

@@ -1,4 +1,5 @@
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
+#include <dyncontact/contact_dynamics/mass_redistribution.h>
 #include <dyncontact/contact_dynamics/no_rate_correction.h>
 #include <dyncontact/contact_dynamics/taylor_papadopoulos.h>
 
@@ -8,7 +9,8 @@ const NameTable<ContactDynamicsKind>& contact_dynamics_names()
 {
   static const NameTable<ContactDynamicsKind> names{
       {"none", ContactDynamicsKind::none},
-      {"taylor-papadopoulos", ContactDynamicsKind::taylor_papadopoulos}};
+      {"taylor-papadopoulos", ContactDynamicsKind::taylor_papadopoulos},
+      {"mass-redistribution", ContactDynamicsKind::mass_redistribution}};
   return names;
 }
 
@@ -21,6 +23,8 @@ std::unique_ptr<ContactDynamics<dim>> create_contact_dynamics(const ContactDynam
     return std::make_unique<NoRateCorrection<dim>>();
   case ContactDynamicsKind::taylor_papadopoulos:
     return std::make_unique<TaylorPapadopoulos<dim>>();
+  case ContactDynamicsKind::mass_redistribution:
+    return std::make_unique<MassRedistribution<dim>>();
   }
   throw std::logic_error("create_contact_dynamics: a ContactDynamicsKind without a treatment");
 }

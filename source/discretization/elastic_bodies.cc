@@ -182,8 +182,13 @@ ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
 }
 
 template <int dim>
-Vector<double> ElasticBodies<dim>::lumped_mass() const
+Vector<double> ElasticBodies<dim>::lumped_mass(const std::vector<bool>& massless_dofs) const
 {
+  AssertThrow(massless_dofs.empty() || massless_dofs.size() == dof_handler.n_dofs(),
+              ExcMessage("ElasticBodies::lumped_mass: massless_dofs must be empty or have n_dofs "
+                         "entries"));
+  const auto is_massless = [&](const types::global_dof_index dof)
+  { return !massless_dofs.empty() && massless_dofs[dof]; };
   const FiniteElement<dim>& fe = dof_handler.get_fe();
   // Exact for rho phi_i^2 times the (at most linear) measure factor on affine cells.
   const QGauss<dim> quadrature(fe.degree + 2);
@@ -193,6 +198,7 @@ Vector<double> ElasticBodies<dim>::lumped_mass() const
   Vector<double> mass(dof_handler.n_dofs());
   std::vector<types::global_dof_index> local_dofs(n_local);
   std::vector<double> consistent_diagonal(n_local);
+  std::vector<double> cell_lumped(n_local);
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     if (!cell->is_locally_owned())
@@ -215,9 +221,28 @@ Vector<double> ElasticBodies<dim>::lumped_mass() const
     std::vector<double> diagonal_sum(fe.n_components(), 0.);
     for (unsigned int i = 0; i < n_local; ++i)
       diagonal_sum[fe.system_to_component_index(i).first] += consistent_diagonal[i];
+    // Mass redistribution: the massless DoFs' share goes to the others of the same component.
+    std::vector<double> moved(fe.n_components(), 0.), kept(fe.n_components(), 0.);
     for (unsigned int i = 0; i < n_local; ++i)
-      mass[local_dofs[i]] +=
-          consistent_diagonal[i] * cell_mass / diagonal_sum[fe.system_to_component_index(i).first];
+    {
+      const unsigned int component = fe.system_to_component_index(i).first;
+      cell_lumped[i]               = consistent_diagonal[i] * cell_mass / diagonal_sum[component];
+      (is_massless(local_dofs[i]) ? moved : kept)[component] += cell_lumped[i];
+    }
+    for (unsigned int component = 0; component < fe.n_components(); ++component)
+      if (moved[component] > 0. && kept[component] == 0.)
+        throw InputError("Contact/dynamics = mass-redistribution: a cell of body " +
+                         std::to_string(cell->material_id() + 1) +
+                         " has all its nodes on the contact surfaces, so its mass has nowhere to "
+                         "go; refine the mesh (bars: at least 2 elements).");
+    for (unsigned int i = 0; i < n_local; ++i)
+    {
+      const unsigned int component = fe.system_to_component_index(i).first;
+      if (!is_massless(local_dofs[i]))
+        mass[local_dofs[i]] += moved[component] > 0.
+                                   ? cell_lumped[i] * (1. + moved[component] / kept[component])
+                                   : cell_lumped[i];
+    }
   }
   sum_over_ranks(mass, dof_handler.get_triangulation().get_communicator());
   return mass;

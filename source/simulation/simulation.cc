@@ -110,6 +110,10 @@ void Simulation<dim>::build_contact_and_solver()
   penalty_factor     = built.penalty_factor;
   penalty_lowered    = built.penalty_lowered_to_resolve_springs;
   contact_dynamics   = create_contact_dynamics<dim>(parameters.contact.dynamics);
+  // Mass redistribution: the contact nodes lose their mass only now, after the penalty sizing,
+  // which weighs a pair's spring by its nodes' masses.
+  if (contact_dynamics->contact_nodes_massless())
+    mass = bodies->lumped_mass(contact->contact_dofs(dof_handler.n_dofs()));
   solver =
       std::make_unique<ContactNewtonSolver<dim>>(dof_handler,
                                                  *bodies,
@@ -260,11 +264,12 @@ void Simulation<dim>::set_initial_conditions()
     for (unsigned int d = 0; d < dim; ++d)
       velocity[node.dofs[d]] = v0[d];
   }
-  // Initial acceleration from equilibrium, M a_0 = W(0) - Q(u_0) (no contact at t = 0).
+  // Initial acceleration from equilibrium, M a_0 = W(0) - Q(u_0) (no contact at t = 0); zero at
+  // massless DoFs (Contact/dynamics = mass-redistribution), whose rates carry no momentum.
   bodies->assemble_internal_force(displacement, internal_force, nullptr);
   external_force = loads->force(0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    acceleration[i] = (external_force[i] - internal_force[i]) / mass[i];
+    acceleration[i] = mass[i] > 0. ? (external_force[i] - internal_force[i]) / mass[i] : 0.;
   for (const auto dof : fixed_dofs)
     velocity[dof] = acceleration[dof] = 0.;
   contact->update_geometry(displacement);

@@ -138,4 +138,13 @@ std::vector<unsigned int> contact_samples(const BarRun& run)
   }
   return samples;
 }
+
+unsigned int contact_episodes(const History& history)
+{
+  const auto active     = history.column("active_constraints");
+  unsigned int episodes = 0;
+  for (unsigned int row = 1; row < active.size(); ++row)
+    episodes += active[row] > 0. && active[row - 1] == 0.;
+  return episodes;
+}
 } // namespace dyncontact::testing

@@ -73,4 +73,7 @@ std::vector<std::string> paper_coarse_spheres(const std::vector<std::string>& mo
  * in transit, so neither side's value is a meaningful reference; there is one such sample per jump.
  */
 std::vector<unsigned int> contact_samples(const BarRun& run);
+
+/** The number of contact episodes: rows with active pairs that follow a row without. */
+unsigned int contact_episodes(const History& history);
 } // namespace dyncontact::testing

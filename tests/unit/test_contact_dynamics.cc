@@ -167,6 +167,31 @@ TEST(ContactDynamics, NoneKeepsTheClassicalRates)
   }
   EXPECT_GT(std::abs(step.v[1] - step.v[0]), 0.1); // the jump the paper's correction removes
 }
+// Mass redistribution: a massless node's rates are the step's backward differences,
+// v = (u_{n+1} - u_n)/dt and a = (v_{n+1} - v_n)/dt, computed here independently; the node with
+// mass keeps its classical rates bit for bit. 1e-13 relative: two roundings of numbers of order 10.
+TEST(ContactDynamics, MassRedistributionGivesMasslessNodesTheirBackwardDifferences)
+{
+  TwoMassStep<2> step(Tensor<1, 2>({0.6, 0.8}), false);
+  for (unsigned int d = 0; d < 2; ++d)
+    step.mass[d] = 0.; // node 0 massless, node 1 keeps 3
+  const Vector<double> classical_v = step.v, classical_a = step.a;
+  step.correct(ContactDynamicsKind::mass_redistribution);
+  for (unsigned int d = 0; d < 2; ++d)
+  {
+    const double dt = step.rates.time_step;
+    const double v  = (step.new_u[d] - step.old_u[d]) / dt;
+    EXPECT_NEAR(step.v[d], v, 1e-13 * (std::abs(v) + 1.));
+    EXPECT_NEAR(step.a[d], (v - step.old_v[d]) / dt, 1e-13 * (std::abs(v) / dt + 1.));
+    EXPECT_EQ(step.v[2 + d], classical_v[2 + d]);
+    EXPECT_EQ(step.a[2 + d], classical_a[2 + d]);
+  }
+  EXPECT_TRUE(create_contact_dynamics<2>(ContactDynamicsKind::mass_redistribution)
+                  ->contact_nodes_massless());
+  EXPECT_FALSE(create_contact_dynamics<2>(ContactDynamicsKind::taylor_papadopoulos)
+                   ->contact_nodes_massless());
+}
+
 // Node-to-segment pairs sharing a master face: two slave nodes against the same three master nodes
 // (quadratic shape-function weights, one negative), along different normals, with unequal masses.
 // The correction must close both pairs' normal velocity and acceleration jumps at once (a pairwise

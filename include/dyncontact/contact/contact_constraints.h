@@ -79,6 +79,12 @@ public:
   /** Couples row/column n_dofs + k of candidate k with the DoFs of its nodes. */
   void add_to_sparsity(DynamicSparsityPattern& sparsity, types::global_dof_index n_dofs) const;
 
+  /**
+   * The DoFs any candidate pair can couple during the run (those of add_to_sparsity(): with a
+   * contact geometry every node of the contact surfaces a pair may project on), as n_dofs flags.
+   */
+  std::vector<bool> contact_dofs(types::global_dof_index n_dofs) const;
+
   /** Adds the contact forces G^T lambda on the bodies to `force` (length n_dofs). */
   void add_contact_forces(Vector<double>& force) const;
 
@@ -172,6 +178,10 @@ public:
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
 private:
+  /** Calls f(dof) for every DoF candidate pair `k` can couple (see contact_dofs()). */
+  template <typename Function>
+  void for_each_coupled_dof(unsigned int k, const Function& f) const;
+
   /**
    * n . (M a + Q(u) - W) at `node`: the equation-of-motion balance along n, i.e. minus the contact
    * force on a body-A node and plus that on a body-B node.

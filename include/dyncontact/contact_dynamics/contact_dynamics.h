@@ -26,6 +26,12 @@ public:
   virtual ~ContactDynamics() = default;
 
   /**
+   * Whether the nodes that can come into contact carry no mass (MassRedistribution): Simulation
+   * then builds the lumped mass with ContactConstraints::contact_dofs() massless. False by default.
+   */
+  virtual bool contact_nodes_massless() const { return false; }
+
+  /**
    * After a converged step (classical rates v_new, a_new at every DoF, from the increment of
    * `step`): corrects the rates of the DoFs of the active pairs of `contact`. `lumped_mass` is per
    * DoF [mass]; all vectors are whole over the displacement DoFs.

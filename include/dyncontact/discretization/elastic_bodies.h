@@ -66,8 +66,14 @@ public:
                 const Kinematics<dim>& kinematics,
                 std::vector<BodyMaterial> bodies);
 
-  /** Diagonal of the lumped mass matrix, one entry per DoF, on every rank. */
-  Vector<double> lumped_mass() const;
+  /**
+   * Diagonal of the lumped mass matrix [mass], one entry per DoF, on every rank. The DoFs flagged
+   * in `massless_dofs` (empty, or n_dofs entries) get zero: each cell's lumped mass of them goes to
+   * the cell's other DoFs of the same component in proportion to theirs, so each cell keeps its
+   * mass per component (mass redistribution, Khenous, Laborde & Renard 2008). Throws InputError if
+   * a cell has every DoF of a component massless.
+   */
+  Vector<double> lumped_mass(const std::vector<bool>& massless_dofs = {}) const;
 
   /**
    * Internal force Q(u) into `internal_force` (overwritten) and, if `tangent` is not null, dQ/du

@@ -1,0 +1,94 @@
+// Tests of Contact/dynamics = mass-redistribution (Khenous, Laborde & Renard 2008): the contact
+// nodes carry no mass, every cell keeps its mass, and the contact force of the bars of the paper's
+// 6.1 and of a stiff striker follows the exact wave solution without oscillating (ExactBarSolution,
+// tested on its own in test_exact_bar_solution.cc).
+#include <cmath>
+#include <gtest/gtest.h>
+#include <numeric>
+
+#include "case_run.h"
+
+namespace dyncontact::testing
+{
+namespace
+{
+const std::string identical = "prm/bars_identical.prm";
+} // namespace
+
+// Bars of 100 elements (h = 0.1, rho A = 1): the interface node of each bar (its lumped mass
+// 0.05) becomes massless and its neighbour gets the whole end element's mass, 0.15; each bar keeps
+// rho A L = 10. Exact up to the round-off of summing 100 lumped masses (1e-12 relative).
+TEST(MassRedistribution, TakesTheMassOffTheContactNodesAndKeepsEachCellsMass)
+{
+  const BarRun run = run_bar_case(
+      identical, {"Contact/dynamics=mass-redistribution", "Time integration/end time=0.1"});
+  const Vector<double>& mass = run.simulation->lumped_mass();
+  unsigned int massless = 0, heavier = 0;
+  for (const double m : mass)
+  {
+    massless += m == 0.;
+    heavier += std::abs(m - 0.15) < 1e-12;
+  }
+  EXPECT_EQ(massless, 2u);
+  EXPECT_EQ(heavier, 2u);
+  EXPECT_NEAR(std::accumulate(mass.begin(), mass.end(), 0.), 20., 1e-12 * 20.);
+  // The initial momentum, 1 per unit length of bar 1, is that of the unmodified mass.
+  EXPECT_NEAR(run.history().value(0, "momentum_1"), 10., 1e-12 * 10.);
+}
+
+// The defining property (Khenous, Laborde & Renard 2008, section 5): no contact-force oscillation.
+// On 6.1 the exact force is Z v / 2 = 0.5 for 0 < t < 20. After a start-up transient that dies
+// within the first time unit, the force stays within 2e-3 of 0.5 (measured 7e-4 at the shipped
+// beta = 0.001, 6e-3 at beta = 0.25); the classical scheme at beta = 0.25 opens and closes the
+// contact 123 times with forces up to 3.9.
+TEST(MassRedistribution, IdenticalBarsContactForceDoesNotOscillate)
+{
+  const BarRun run = run_bar_case(identical, {"Contact/dynamics=mass-redistribution"});
+  const auto force = run.history().column("contact_force");
+  const auto times = run.history().column("time");
+  double deviation = 0.;
+  for (unsigned int row = 0; row < times.size(); ++row)
+    if (times[row] > 1. && times[row] < 19.)
+      deviation = std::max(deviation, std::abs(force[row] - 0.5));
+  std::cout << "  6.1, mass redistribution: max |F - 0.5| on (1, 19) = " << deviation
+            << ", contact episodes " << contact_episodes(run.history()) << "\n";
+  EXPECT_LE(deviation, 2e-3);
+  EXPECT_EQ(contact_episodes(run.history()), 1u);
+}
+
+// A stiff striker (E = 1e4, wave speed 100, Courant number 100) on the soft bar of 6.1 at
+// dt = 0.1, trapezoidal rule: the exact solution has one contact episode on [0, 20), the force
+// starting at Z1 Z2 v / (Z1 + Z2) = 0.990 and decaying in steps to 0.137 as the near-rigid striker
+// slows. Issue 14's acceptance C: one episode, and the force within 0.1 of the exact one in
+// window means over every time unit (measured: worst 0.090, in the last window, where the
+// discrete release comes 0.4 early, as with every scheme at this mesh: the target's reflected
+// wave front is smeared over a few elements).
+TEST(MassRedistribution, StiffStrikerKeepsOneContactEpisodeWithTheExactForce)
+{
+  const BarRun run = run_bar_case(identical,
+                                  {"Contact/dynamics=mass-redistribution",
+                                   "Geometry/Bar 1/Young's modulus=1e4",
+                                   "Time integration/beta=0.25"});
+  EXPECT_EQ(contact_episodes(run.history()), 1u);
+  const auto force = run.history().column("contact_force");
+  const auto times = run.history().column("time");
+  double worst     = 0.;
+  for (unsigned int window = 0; window < 20; ++window)
+  {
+    double computed = 0., exact = 0.;
+    unsigned int samples = 0;
+    for (unsigned int row = 0; row < times.size(); ++row)
+      if (times[row] > window && times[row] <= window + 1)
+      {
+        computed += force[row];
+        exact += run.exact_contact_force(times[row]);
+        ++samples;
+      }
+    ASSERT_GT(samples, 0u);
+    worst = std::max(worst, std::abs(computed - exact) / samples);
+  }
+  std::cout << "  stiff striker, mass redistribution: worst window-mean force error " << worst
+            << "\n";
+  EXPECT_LE(worst, 0.1);
+}
+} // namespace dyncontact::testing
