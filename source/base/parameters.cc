@@ -613,7 +613,11 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
                     "multipliers. mass-redistribution: the nodes that can come into contact carry "
                     "no mass, each cell's mass going to its other nodes (Khenous, Laborde & "
                     "Renard 2008); the contact force is then the adjacent elements' elastic "
-                    "force, without the oscillation of massive contact nodes.");
+                    "force, without the oscillation of massive contact nodes. contact-stabilized: "
+                    "the contact-stabilized Newmark of Deuflhard, Krause & Ertel (2008): the "
+                    "predictor projected onto the admissible set, the old contact force left out "
+                    "of the explicit part; energy dissipative at contact with beta = 1/4, gamma = "
+                    "1/2.");
   prm.declare_entry("formulation",
                     "lagrange multiplier",
                     Patterns::Selection(contact_formulation_names().selection()),

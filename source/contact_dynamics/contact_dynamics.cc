@@ -1,4 +1,5 @@
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
+#include <dyncontact/contact_dynamics/contact_stabilized_newmark.h>
 #include <dyncontact/contact_dynamics/mass_redistribution.h>
 #include <dyncontact/contact_dynamics/no_rate_correction.h>
 #include <dyncontact/contact_dynamics/taylor_papadopoulos.h>
@@ -10,7 +11,8 @@ const NameTable<ContactDynamicsKind>& contact_dynamics_names()
   static const NameTable<ContactDynamicsKind> names{
       {"none", ContactDynamicsKind::none},
       {"taylor-papadopoulos", ContactDynamicsKind::taylor_papadopoulos},
-      {"mass-redistribution", ContactDynamicsKind::mass_redistribution}};
+      {"mass-redistribution", ContactDynamicsKind::mass_redistribution},
+      {"contact-stabilized", ContactDynamicsKind::contact_stabilized}};
   return names;
 }
 
@@ -25,6 +27,8 @@ std::unique_ptr<ContactDynamics<dim>> create_contact_dynamics(const ContactDynam
     return std::make_unique<TaylorPapadopoulos<dim>>();
   case ContactDynamicsKind::mass_redistribution:
     return std::make_unique<MassRedistribution<dim>>();
+  case ContactDynamicsKind::contact_stabilized:
+    return std::make_unique<ContactStabilizedNewmark<dim>>();
   }
   throw std::logic_error("create_contact_dynamics: a ContactDynamicsKind without a treatment");
 }

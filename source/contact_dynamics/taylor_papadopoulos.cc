@@ -1,61 +1,10 @@
+#include <dyncontact/contact_dynamics/pair_mass_system.h>
 #include <dyncontact/contact_dynamics/taylor_papadopoulos.h>
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseCore>
-#include <map>
 #include <vector>
 
 namespace dyncontact
 {
-namespace
-{
-/** One appearance of a node in an active pair: the pair's row among the active ones, c_kj. */
-struct Incidence
-{
-  unsigned int row;
-  double coefficient;
-};
-
-/** A node of an active pair with all its appearances. */
-template <int dim>
-struct NodeIncidence
-{
-  const Node<dim>* node;
-  std::vector<Incidence> appearances;
-};
-
-/** The nodes of the active pairs, keyed by their first DoF. */
-template <int dim>
-using IncidenceMap = std::map<types::global_dof_index, NodeIncidence<dim>>;
-
-/**
- * Solves (B M^-1 B^T) x = rhs for both right-hand sides, B the active pairs' rows
- * B_kj = c_kj n_k^T over the nodes j (slave -1, master w_i) and M the lumped nodal masses.
- */
-template <int dim>
-std::pair<Eigen::VectorXd, Eigen::VectorXd>
-solve_rate_multipliers(const std::vector<const ContactPair<dim>*>& active,
-                       const IncidenceMap<dim>& incidence,
-                       const Vector<double>& lumped_mass,
-                       const Eigen::VectorXd& rhs_a,
-                       const Eigen::VectorXd& rhs_v)
-{
-  std::vector<Eigen::Triplet<double>> entries;
-  for (const auto& [dof, node] : incidence)
-    for (const Incidence& k : node.appearances)
-      for (const Incidence& l : node.appearances)
-        entries.emplace_back(k.row,
-                             l.row,
-                             k.coefficient * l.coefficient *
-                                 (active[k.row]->normal * active[l.row]->normal) /
-                                 lumped_mass[dof]);
-  Eigen::SparseMatrix<double> matrix(active.size(), active.size());
-  matrix.setFromTriplets(entries.begin(), entries.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization(matrix);
-  return {factorization.solve(rhs_a), factorization.solve(rhs_v)};
-}
-} // namespace
-
 template <int dim>
 void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
                                             const ContactConstraints<dim>& contact,
@@ -68,8 +17,6 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
   const Vector<double>& a_old = step.old_acceleration;
   std::vector<const ContactPair<dim>*> active;
   std::vector<double> predicted_position_jump, predicted_velocity_jump;
-  // Every node of an active pair with its pairs' rows and coefficients.
-  IncidenceMap<dim> incidence;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
   {
     if (!contact.is_active(k))
@@ -85,43 +32,30 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
     predicted_position_jump.push_back(
         rates.predicted_displacement(position_jump, velocity_jump, acceleration_jump));
     predicted_velocity_jump.push_back(rates.predicted_velocity(velocity_jump, acceleration_jump));
-    const unsigned int row = active.size();
     active.push_back(&pair);
-    pair.for_each_node(
-        [&](const Node<dim>& node, const double coefficient)
-        {
-          NodeIncidence<dim>& entry = incidence[node.dofs[0]];
-          entry.node                = &node;
-          entry.appearances.push_back({row, coefficient});
-        });
   }
   if (active.empty())
     return;
 
   // Eqs. (21) and (22), for pairs that may share nodes (node-to-segment): the multipliers of the
   // rate constraints [[a]].n = 0 and [[v]].n = 0 of all active pairs at once.
-  const auto [lambda_a, lambda_v] = solve_rate_multipliers(
-      active,
-      incidence,
-      lumped_mass,
-      Eigen::Map<const Eigen::VectorXd>(predicted_position_jump.data(), active.size()),
-      Eigen::Map<const Eigen::VectorXd>(predicted_velocity_jump.data(), active.size()));
+  const unsigned int n_active = active.size();
+  const PairMassSystem<dim> system(std::move(active), lumped_mass);
+  const Eigen::VectorXd lambda_a =
+      system.solve(Eigen::Map<const Eigen::VectorXd>(predicted_position_jump.data(), n_active));
+  const Eigen::VectorXd lambda_v =
+      system.solve(Eigen::Map<const Eigen::VectorXd>(predicted_velocity_jump.data(), n_active));
 
   // Recovery of each node's rates: the increment over the predictor shifted by M^-1 B^T lambda_a
   // gives a_{n+1}, the velocity update from it shifted by M^-1 B^T lambda_v gives v_{n+1}.
-  for (const auto& [first_dof, entry] : incidence)
+  for (unsigned int i = 0; i < system.n_nodes(); ++i)
   {
-    const Node<dim>& node = *entry.node;
-    Tensor<1, dim> shift_a, shift_v;
-    for (const Incidence& k : entry.appearances)
-    {
-      shift_a += k.coefficient * lambda_a[k.row] * active[k.row]->normal;
-      shift_v += k.coefficient * lambda_v[k.row] * active[k.row]->normal;
-    }
-    const double mass = lumped_mass[first_dof];
+    const Tensor<1, dim> shift_a = system.nodal_force(i, lambda_a);
+    const Tensor<1, dim> shift_v = system.nodal_force(i, lambda_v);
+    const double mass            = system.mass(i);
     for (unsigned int d = 0; d < dim; ++d)
     {
-      const types::global_dof_index dof = node.dofs[d];
+      const types::global_dof_index dof = system.node(i).dofs[d];
       a_new[dof] = rates.acceleration(step.increment[dof] + shift_a[d] / mass);
       v_new[dof] = rates.velocity(v_old[dof], a_old[dof], a_new[dof]) - shift_v[d] / mass;
     }

@@ -368,12 +368,20 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
 {
   const Vector<double>& old_displacement = before.displacement;
   const Vector<double>& old_velocity     = before.velocity;
-  const Vector<double>& old_acceleration = before.acceleration;
   // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
   // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
   contact->update_geometry(old_displacement);
   Vector<double> predictor, increment(dof_handler.n_dofs());
-  integrator.predict(old_displacement, old_velocity, old_acceleration, predictor);
+  integrator.predict(old_displacement, old_velocity, before.acceleration, predictor);
+  // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).
+  Vector<double> old_acceleration = before.acceleration;
+  contact_dynamics->adjust_predictor(
+      integrator.rate_map(),
+      *contact,
+      mass,
+      {old_displacement, old_velocity, before.internal_force, before.external_force, is_fixed_dof},
+      old_acceleration,
+      predictor);
   Vector<double> last_configuration = old_displacement; // as an increment over the predictor
   last_configuration -= predictor;
   external_force    = loads->force(time);
@@ -476,10 +484,12 @@ typename Simulation<dim>::Measures Simulation<dim>::measure() const
   if (step_history.n_rows() > 0)
   {
     const Vector<double> net_force = net_internal_force();
-    measures.contact_force = contact->recovered_contact_force(mass, acceleration, net_force);
+    const double force_factor      = contact_dynamics->contact_force_factor(integrator.rate_map());
+    measures.contact_force =
+        force_factor * contact->recovered_contact_force(mass, acceleration, net_force);
     const auto side_forces =
         contact->recovered_side_forces(mass, acceleration, net_force, model->impact_direction());
-    measures.force_imbalance   = side_forces.on_a - side_forces.on_b;
+    measures.force_imbalance   = force_factor * (side_forces.on_a - side_forces.on_b);
     measures.velocity_jump     = contact->max_active_normal_jump(velocity);
     measures.acceleration_jump = contact->max_active_normal_jump(acceleration);
   }

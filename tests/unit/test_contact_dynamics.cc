@@ -192,6 +192,74 @@ TEST(ContactDynamics, MassRedistributionGivesMasslessNodesTheirBackwardDifferenc
                    ->contact_nodes_massless());
 }
 
+// Contact-stabilized Newmark (Deuflhard, Krause & Ertel 2008): two masses (1 and 3) on a line,
+// 0.01 apart and closing at relative speed 1, so that u_n + dt v_n (dt = 0.1) overlaps by 0.09.
+// The predictor's position part is projected onto g >= 0 in the mass norm: the pair closes
+// exactly, the lighter mass moves 3 times as far as the heavier one, and the momentum of the
+// shifts is zero; the rest of the predictor is Newmark's with a_n. Where a contact force acts at
+// t_n, a_n is replaced by the free acceleration (W_n - Q(u_n)) / m. Bounds: 1e-15 absolute on
+// positions of order 1 (a few roundings), exact where nothing is replaced.
+TEST(ContactDynamics, ContactStabilizedProjectsThePredictorAndDropsTheOldContactForce)
+{
+  ContactPair<1> pair;
+  pair.slave             = {0, Point<1>(0.), {{0}}};
+  pair.masters           = {{Node<1>{1, Point<1>(0.01), {{1}}}, 1.}};
+  pair.normal            = Tensor<1, 1>({1.});
+  pair.penalty_stiffness = 0.;
+  ContactConstraints<1> contact({pair}, ContactFormulation::lagrange_multiplier);
+  const RateMap rates{0.1, 0.25, 0.5};
+  Vector<double> mass(2), u(2), v(2), a(2), internal_force(2), external_force(2);
+  mass[0]               = 1.;
+  mass[1]               = 3.;
+  v[0]                  = 0.75; // momentum 0.75 - 0.75 = 0
+  v[1]                  = -0.25;
+  a[0]                  = 0.5;
+  a[1]                  = -0.1;
+  internal_force[0]     = 0.2;
+  internal_force[1]     = -0.3;
+  const auto stabilized = create_contact_dynamics<1>(ContactDynamicsKind::contact_stabilized);
+  const std::vector<bool> free(2, false); // no fixed DoF
+  for (const bool with_old_force : {false, true})
+  {
+    if (with_old_force)
+    {
+      Vector<double> multiplier(1);
+      multiplier[0] = 2.;
+      contact.add_multiplier_increment(multiplier);
+    }
+    Vector<double> acceleration = a, predictor(2);
+    for (unsigned int i = 0; i < 2; ++i)
+      predictor[i] = rates.predicted_displacement(u[i], v[i], a[i]);
+    stabilized->adjust_predictor(rates,
+                                 contact,
+                                 mass,
+                                 {u, v, internal_force, external_force, free},
+                                 acceleration,
+                                 predictor);
+    Vector<double> expected_acceleration = a;
+    if (with_old_force)
+      for (unsigned int i = 0; i < 2; ++i)
+        expected_acceleration[i] = (external_force[i] - internal_force[i]) / mass[i];
+    // The projection of u + dt v = (0.075, -0.025): overlap 0.09, split 3 : 1 by the masses.
+    const std::array<double, 2> shift{{-0.0675, 0.0225}};
+    for (unsigned int i = 0; i < 2; ++i)
+    {
+      EXPECT_EQ(acceleration[i], expected_acceleration[i]) << with_old_force;
+      EXPECT_NEAR(predictor[i],
+                  rates.predicted_displacement(u[i], v[i], expected_acceleration[i]) + shift[i],
+                  1e-15)
+          << with_old_force;
+    }
+    Vector<double> projected = u;
+    projected.add(rates.time_step, v);
+    projected[0] += shift[0];
+    projected[1] += shift[1];
+    EXPECT_NEAR(contact.gap(0, projected), 0., 1e-15);
+    EXPECT_NEAR(mass[0] * shift[0] + mass[1] * shift[1], 0., 1e-15);
+  }
+  EXPECT_DOUBLE_EQ(stabilized->contact_force_factor(rates), 0.5);
+}
+
 // Node-to-segment pairs sharing a master face: two slave nodes against the same three master nodes
 // (quadratic shape-function weights, one negative), along different normals, with unequal masses.
 // The correction must close both pairs' normal velocity and acceleration jumps at once (a pairwise

@@ -32,6 +32,39 @@ public:
   virtual bool contact_nodes_massless() const { return false; }
 
   /**
+   * The contact force at t_{n+1} per unit of the recovered one, M a_{n+1} + Q - W at the pairs'
+   * nodes (which equals G^T lambda_{n+1}): 1 by default; gamma for ContactStabilizedNewmark, whose
+   * step carries the contact impulse dt gamma G^T lambda_{n+1} alone.
+   */
+  virtual double contact_force_factor(const RateMap& /*rates*/) const { return 1.; }
+
+  /** The state at t_n a treatment may start a step from (whole vectors over the DoFs). */
+  struct StepStart
+  {
+    const Vector<double>& displacement;   ///< u_n [length]
+    const Vector<double>& velocity;       ///< v_n [length/time]
+    const Vector<double>& internal_force; ///< Q(u_n) [force]
+    const Vector<double>& external_force; ///< W(t_n) [force]
+    const std::vector<bool>& is_fixed;    ///< per DoF: fixed (e.g. u_r = 0 on an axis)
+  };
+
+  /**
+   * Before the step's solve (ContactStabilizedNewmark): may change the Newmark predictor u~
+   * (`predictor`, from u_n, v_n and `old_acceleration` = a_n on entry) and the acceleration at t_n
+   * the step uses in its predictor and velocity update (`old_acceleration`, in and out), neither at
+   * a fixed DoF. The contact layer holds the pairs of u_n and the multipliers of t_n. Does nothing
+   * by default.
+   */
+  virtual void adjust_predictor(const RateMap& /*rates*/,
+                                const ContactConstraints<dim>& /*contact*/,
+                                const Vector<double>& /*lumped_mass*/,
+                                const StepStart& /*start*/,
+                                Vector<double>& /*old_acceleration*/,
+                                Vector<double>& /*predictor*/) const
+  {
+  }
+
+  /**
    * After a converged step (classical rates v_new, a_new at every DoF, from the increment of
    * `step`): corrects the rates of the DoFs of the active pairs of `contact`. `lumped_mass` is per
    * DoF [mass]; all vectors are whole over the displacement DoFs.

@@ -13,7 +13,8 @@ enum class ContactDynamicsKind
 {
   none,                ///< classical: contact constrains displacements only
   taylor_papadopoulos, ///< also [[v]].n = 0 and [[a]].n = 0 on active pairs, paper eqs. (19)-(24)
-  mass_redistribution  ///< no mass on the contact nodes (Khenous, Laborde & Renard 2008)
+  mass_redistribution, ///< no mass on the contact nodes (Khenous, Laborde & Renard 2008)
+  contact_stabilized   ///< predictor projected, old contact force dropped (Deuflhard et al. 2008)
 };
 
 /** The names of Contact/dynamics (defined beside create_contact_dynamics()). */

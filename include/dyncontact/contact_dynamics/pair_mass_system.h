@@ -1,0 +1,70 @@
+#pragma once
+
+#include <dyncontact/contact/contact_pair.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * The pairs' normal constraints weighted by the inverse lumped mass: S = B M^-1 B^T (size: the
+ * number of pairs), with B_kj = c_kj n_k^T the row of pair k over its nodes j (slave -1, master
+ * nodes their weights; a wall has no node and infinite weight) and M the lumped nodal masses. The
+ * nodal changes M^-1 B^T mu that such a system's solution mu gives a set of nodes move the pairs'
+ * normal relative rates or positions by S mu, and conserve linear momentum (each pair's
+ * coefficients sum to zero). Shared by the treatments that act on several pairs at once, which may
+ * share nodes (node-to-segment): the rate constraints of TaylorPapadopoulos (paper eqs. 21-22) and
+ * the predictor projection of ContactStabilizedNewmark. Needs positive masses at the pairs' nodes.
+ */
+template <int dim>
+class PairMassSystem
+{
+public:
+  /**
+   * `pairs` (not owned, they must outlive this object) in row order; `lumped_mass` per DoF [mass].
+   * Factorizes S (sparse LDL^T, Eigen).
+   */
+  PairMassSystem(std::vector<const ContactPair<dim>*> pairs, const Vector<double>& lumped_mass);
+
+  /** The number of pairs (rows of S). */
+  unsigned int size() const { return pairs.size(); }
+
+  /** mu = S^-1 rhs (`rhs` has size() entries) [rhs over mass]. */
+  Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const { return factorization.solve(rhs); }
+
+  /** The number of distinct nodes of the pairs. */
+  unsigned int n_nodes() const { return nodes.size(); }
+
+  /** Node `i` (< n_nodes()) of the pairs. */
+  const Node<dim>& node(const unsigned int i) const { return *nodes[i].node; }
+
+  /** The lumped mass of node `i` [mass]. */
+  double mass(const unsigned int i) const { return nodes[i].mass; }
+
+  /** (B^T mu) at node `i`: sum over the pairs k it appears in of c_kj mu_k n_k. */
+  Tensor<1, dim> nodal_force(unsigned int i, const Eigen::VectorXd& mu) const;
+
+private:
+  /** One appearance of a node in a pair: the pair's row and the node's coefficient c_kj. */
+  struct Appearance
+  {
+    unsigned int row;
+    double coefficient;
+  };
+  /** A node of the pairs with its mass and all its appearances. */
+  struct NodeAppearances
+  {
+    const Node<dim>* node;
+    double mass;
+    std::vector<Appearance> appearances;
+  };
+
+  std::vector<const ContactPair<dim>*> pairs;
+  std::vector<NodeAppearances> nodes;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization;
+};
+} // namespace dyncontact

@@ -1,0 +1,101 @@
+#include <dyncontact/contact_dynamics/contact_stabilized_newmark.h>
+#include <dyncontact/contact_dynamics/pair_mass_system.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+namespace
+{
+/**
+ * The shift s = M^-1 B^T mu, mu >= 0, that closes the pairs penetrating at `position` (the mass
+ * projection onto g >= 0, by the active-set rounds of the class documentation), as a whole
+ * vector; zero if no pair penetrates.
+ */
+template <int dim>
+Vector<double> projection_shift(const ContactConstraints<dim>& contact,
+                                const Vector<double>& lumped_mass,
+                                const Vector<double>& position)
+{
+  Vector<double> shift(position.size());
+  std::vector<bool> closing(contact.n_pairs(), false);
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    closing[k] = contact.gap(k, position) < 0.;
+  for (unsigned int round = 0; round <= contact.n_pairs(); ++round)
+  {
+    std::vector<unsigned int> rows;
+    std::vector<const ContactPair<dim>*> pairs;
+    for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+      if (closing[k])
+      {
+        rows.push_back(k);
+        pairs.push_back(&contact.candidate_pairs()[k]);
+      }
+    shift = 0.;
+    if (rows.empty())
+      return shift;
+    Eigen::VectorXd opening(rows.size());
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      opening[r] = -contact.gap(rows[r], position);
+    const PairMassSystem<dim> system(std::move(pairs), lumped_mass);
+    const Eigen::VectorXd mu = system.solve(opening);
+    bool changed             = false;
+    for (unsigned int r = 0; r < rows.size(); ++r)
+      if (mu[r] < 0.) // the pair would be pulled shut: it opens by itself
+      {
+        closing[rows[r]] = false;
+        changed          = true;
+      }
+    if (changed)
+      continue;
+    for (unsigned int i = 0; i < system.n_nodes(); ++i)
+    {
+      const Tensor<1, dim> force = system.nodal_force(i, mu);
+      for (unsigned int d = 0; d < dim; ++d)
+        shift[system.node(i).dofs[d]] += force[d] / system.mass(i);
+    }
+    Vector<double> projected = position;
+    projected += shift;
+    for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+      if (!closing[k] && contact.gap(k, projected) < 0.)
+      {
+        closing[k] = true;
+        changed    = true;
+      }
+    if (!changed)
+      return shift;
+  }
+  return shift; // the last round's projection (the rounds did not settle)
+}
+} // namespace
+
+template <int dim>
+void ContactStabilizedNewmark<dim>::adjust_predictor(const RateMap& rates,
+                                                     const ContactConstraints<dim>& contact,
+                                                     const Vector<double>& lumped_mass,
+                                                     const StepStart& start,
+                                                     Vector<double>& old_acceleration,
+                                                     Vector<double>& predictor) const
+{
+  // The free acceleration where the contact force of t_n acts.
+  Vector<double> contact_force(predictor.size());
+  contact.add_contact_forces(contact_force);
+  // The position part u_n + dt v_n, projected.
+  Vector<double> position = start.displacement;
+  position.add(rates.time_step, start.velocity);
+  const Vector<double> shift = projection_shift(contact, lumped_mass, position);
+  for (types::global_dof_index i = 0; i < predictor.size(); ++i)
+  {
+    if ((contact_force[i] == 0. && shift[i] == 0.) || start.is_fixed[i])
+      continue; // classical Newmark, bit for bit
+    if (contact_force[i] != 0.)
+      old_acceleration[i] = (start.external_force[i] - start.internal_force[i]) / lumped_mass[i];
+    predictor[i] = rates.predicted_displacement(
+                       start.displacement[i], start.velocity[i], old_acceleration[i]) +
+                   shift[i];
+  }
+}
+
+template class ContactStabilizedNewmark<1>;
+template class ContactStabilizedNewmark<2>;
+} // namespace dyncontact
