@@ -139,6 +139,20 @@ std::vector<unsigned int> contact_samples(const BarRun& run)
   return samples;
 }
 
+double max_force_deviation(const History& history,
+                           const double value,
+                           const double start,
+                           const double end)
+{
+  const auto force = history.column("contact_force");
+  const auto times = history.column("time");
+  double deviation = 0.;
+  for (unsigned int row = 0; row < times.size(); ++row)
+    if (times[row] > start && times[row] < end)
+      deviation = std::max(deviation, std::abs(force[row] - value));
+  return deviation;
+}
+
 unsigned int contact_episodes(const History& history)
 {
   const auto active     = history.column("active_constraints");

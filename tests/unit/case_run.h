@@ -76,4 +76,7 @@ std::vector<unsigned int> contact_samples(const BarRun& run);
 
 /** The number of contact episodes: rows with active pairs that follow a row without. */
 unsigned int contact_episodes(const History& history);
+
+/** max |contact_force - value| over the rows with start < t < end. */
+double max_force_deviation(const History& history, double value, double start, double end);
 } // namespace dyncontact::testing

@@ -43,12 +43,7 @@ TEST(ContactStabilized, IdenticalBarsContactForceDoesNotOscillate)
   const BarRun run =
       run_bar_case("prm/bars_identical.prm",
                    {"Contact/dynamics=contact-stabilized", "Time integration/beta=0.25"});
-  const auto force = run.history().column("contact_force");
-  const auto times = run.history().column("time");
-  double deviation = 0.;
-  for (unsigned int row = 0; row < times.size(); ++row)
-    if (times[row] > 1. && times[row] < 19.)
-      deviation = std::max(deviation, std::abs(force[row] - 0.5));
+  const double deviation = max_force_deviation(run.history(), 0.5, 1., 19.);
   std::cout << "  6.1, contact-stabilized: max |F - 0.5| on (1, 19) = " << deviation << "\n";
   EXPECT_EQ(contact_episodes(run.history()), 1u);
   EXPECT_LE(deviation, 0.01);

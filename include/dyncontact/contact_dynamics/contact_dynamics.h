@@ -66,15 +66,18 @@ public:
 
   /**
    * After a converged step (classical rates v_new, a_new at every DoF, from the increment of
-   * `step`): corrects the rates of the DoFs of the active pairs of `contact`. `lumped_mass` is per
-   * DoF [mass]; all vectors are whole over the displacement DoFs.
+   * `step`): may correct the rates of the DoFs of the active pairs of `contact`. `lumped_mass` is
+   * per DoF [mass]; all vectors are whole over the displacement DoFs. Keeps the classical rates by
+   * default.
    */
-  virtual void correct_rates(const RateMap& rates,
-                             const ContactConstraints<dim>& contact,
-                             const Vector<double>& lumped_mass,
-                             const StepStates& step,
-                             Vector<double>& v_new,
-                             Vector<double>& a_new) const = 0;
+  virtual void correct_rates(const RateMap& /*rates*/,
+                             const ContactConstraints<dim>& /*contact*/,
+                             const Vector<double>& /*lumped_mass*/,
+                             const StepStates& /*step*/,
+                             Vector<double>& /*v_new*/,
+                             Vector<double>& /*a_new*/) const
+  {
+  }
 };
 
 /** The treatment `kind` of Contact/dynamics. */

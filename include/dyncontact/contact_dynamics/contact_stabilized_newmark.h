@@ -29,7 +29,7 @@ namespace dyncontact
  *
  * Assumptions: positive masses at the pairs' nodes (not combined with mass redistribution);
  * Lagrange multipliers or penalty (the projection closes the predicted gaps either way); the
- * rates of the contact nodes are not corrected afterwards (correct_rates() does nothing).
+ * rates of the contact nodes are not corrected afterwards (correct_rates() keeps its default).
  */
 template <int dim>
 class ContactStabilizedNewmark : public ContactDynamics<dim>
@@ -50,14 +50,5 @@ public:
    * is gamma lambda (measured on the paper's 6.1: lambda = 1.0 for the exact force 0.5).
    */
   double contact_force_factor(const RateMap& rates) const override { return rates.gamma; }
-
-  void correct_rates(const RateMap&,
-                     const ContactConstraints<dim>&,
-                     const Vector<double>&,
-                     const StepStates&,
-                     Vector<double>&,
-                     Vector<double>&) const override
-  {
-  }
 };
 } // namespace dyncontact

@@ -12,14 +12,6 @@ namespace dyncontact
 template <int dim>
 class NoRateCorrection : public ContactDynamics<dim>
 {
-public:
-  void correct_rates(const RateMap&,
-                     const ContactConstraints<dim>&,
-                     const Vector<double>&,
-                     const StepStates&,
-                     Vector<double>&,
-                     Vector<double>&) const override
-  {
-  }
+  // Every hook keeps its default: the classical scheme.
 };
 } // namespace dyncontact
