@@ -835,6 +835,12 @@ void GeometryParameters::declare_parameters(ParameterHandler& prm, const unsigne
     BarParameters::declare_parameters(prm);
     prm.leave_subsection();
   }
+  prm.declare_entry("clamped left end",
+                    "false",
+                    Patterns::Bool(),
+                    "Whether the left end of the leftmost bar is clamped (u = 0 there, a fixed "
+                    "support). With a rigid wall and one bar: the Signorini bar, a bar clamped at "
+                    "one end bouncing on an obstacle.");
   prm.enter_subsection("Rigid wall");
   prm.declare_entry("enabled", "false", Patterns::Bool(), "Whether a fixed rigid wall exists.");
   prm.declare_entry("position",
@@ -857,6 +863,7 @@ void GeometryParameters::parse_parameters(ParameterHandler& prm)
     bars[bar].parse_parameters(prm, "Geometry/" + bar_section(bar));
     prm.leave_subsection();
   }
+  clamped_left_end = prm.get_bool("clamped left end");
   prm.enter_subsection("Rigid wall");
   wall_enabled  = prm.get_bool("enabled");
   wall_position = prm.get_double("position");

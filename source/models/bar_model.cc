@@ -125,6 +125,17 @@ std::vector<Node<1>> BarModel::monitor_nodes(const NodeIndex<1>& nodes) const
   return monitors;
 }
 
+std::vector<types::global_dof_index> BarModel::fixed_dofs(const NodeIndex<1>& nodes) const
+{
+  if (!geometry.clamped_left_end)
+    return {};
+  unsigned int leftmost = 0;
+  for (unsigned int b = 1; b < geometry.bars.size(); ++b)
+    if (geometry.bars[b].left_end < geometry.bars[leftmost].left_end)
+      leftmost = b;
+  return {nodes.closest_node(leftmost, Point<1>(geometry.bars[leftmost].left_end)).dofs[0]};
+}
+
 Tensor<1, 1> BarModel::impact_direction() const
 {
   Tensor<1, 1> plus_x;
@@ -196,7 +207,8 @@ ExactBarSolution BarModel::exact_solution(const double end_time) const
   return ExactBarSolution(bars,
                           geometry.wall_enabled ? std::optional<double>(geometry.wall_position)
                                                 : std::nullopt,
-                          end_time);
+                          end_time,
+                          geometry.clamped_left_end);
 }
 
 void BarModel::print_summary(std::ostream& out, const double time_step) const

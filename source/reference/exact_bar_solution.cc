@@ -80,7 +80,8 @@ void require_positive(const double value, const std::string& message)
 
 ExactBarSolution::ExactBarSolution(const std::vector<ExactBar>& input_bars,
                                    const std::optional<double> wall_position,
-                                   const double end_time_to_track)
+                                   const double end_time_to_track,
+                                   const bool clamped_left_end)
     : end_time(end_time_to_track)
 {
   if (input_bars.empty())
@@ -142,12 +143,13 @@ ExactBarSolution::ExactBarSolution(const std::vector<ExactBar>& input_bars,
   if (wall_position)
     add_interface(x_order.back(), -1, *wall_position - right_end(x_order.back()));
 
-  track_events(x_order.front(), x_order.back(), wall_position.has_value(), gaps);
+  track_events(x_order.front(), x_order.back(), wall_position.has_value(), clamped_left_end, gaps);
 }
 
 void ExactBarSolution::track_events(const unsigned int leftmost_bar,
                                     const unsigned int rightmost_bar,
                                     const bool has_wall,
+                                    const bool clamped_left_end,
                                     std::vector<double> gaps)
 {
   std::priority_queue<double, std::vector<double>, std::greater<double>> arrivals;
@@ -168,8 +170,12 @@ void ExactBarSolution::track_events(const unsigned int leftmost_bar,
   {
     // End conditions at t. Incoming waves left their origin at least one travel time ago, so they
     // are known; each outgoing wave is set exactly once.
+    // A free end reflects the incoming L as R = L (N = 0), a clamped one as R = -L (v = 0).
     Bar& leftmost = bars[leftmost_bar];
-    emit(leftmost.right_going, leftmost, t, incoming_at_left_end(leftmost, t));
+    emit(leftmost.right_going,
+         leftmost,
+         t,
+         (clamped_left_end ? -1.0 : 1.0) * incoming_at_left_end(leftmost, t));
     if (!has_wall)
     {
       Bar& rightmost = bars[rightmost_bar];

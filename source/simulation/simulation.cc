@@ -326,14 +326,15 @@ std::vector<bool> Simulation<dim>::active_pair_dofs() const
 template <int dim>
 std::vector<double> Simulation<dim>::body_forces() const
 {
-  // The nodes of the active pairs carry the contact force; elsewhere M a + Q - W is only the
-  // Newton residual, whose sum over a body balance_body_momenta() has removed.
+  // The nodes of the active pairs carry the contact force and fixed DoFs their support's reaction
+  // (a clamped bar end); elsewhere M a + Q - W is only the Newton residual, whose sum over a body
+  // balance_body_momenta() has removed.
   const std::vector<bool> in_active_pair = active_pair_dofs();
   std::vector<double> forces(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
     double force = external_force[i];
-    if (in_active_pair[i])
+    if (in_active_pair[i] || is_fixed_dof[i])
       force += mass[i] * acceleration[i] + internal_force[i] - external_force[i];
     forces[dof_body[i]] += dof_direction[i] * force;
   }

@@ -259,6 +259,31 @@ TEST(ExactBarSolution, ConservesMomentumAndEnergy)
   }
 }
 
+// A bar clamped at its left end, moving at v0 = 1 (c = 1, L = 10, no obstacle): the classical
+// solution (d'Alembert, the clamped-free bar) stops the bar from the clamp outward in one travel
+// time L/c, reverses it in the next, and after 4 L/c the bar is back in its initial state, while
+// the clamp stays at rest and the energy 1/2 rho A L v0^2 = 5 stays constant. At t = L/c the bar is
+// at rest and stretched by the stopping wave: N = z v0 = 1 (tension) everywhere.
+TEST(ExactBarSolution, ClampedBarReturnsToItsInitialStateEveryFourTravelTimes)
+{
+  const ExactBarSolution solution({unit_bar(0.0, 1.0)}, std::nullopt, 50.0, true);
+  for (const double t : {0.5, 7.0, 23.0, 41.5})
+  {
+    EXPECT_NEAR(solution.velocity(0, 0.0, t), 0.0, tolerance) << t;
+    EXPECT_NEAR(total_energy(solution, t), 5.0, tolerance) << t;
+  }
+  for (const double X : {2.5, 5.0, 9.0})
+  {
+    EXPECT_NEAR(solution.velocity(0, X, 10.0), 0.0, tolerance) << X;
+    EXPECT_NEAR(solution.axial_force(0, X, 10.0), 1.0, tolerance) << X;
+    EXPECT_NEAR(solution.velocity(0, X, 20.0), -1.0, tolerance) << X;
+    EXPECT_NEAR(solution.axial_force(0, X, 20.0), 0.0, tolerance) << X;
+    EXPECT_NEAR(solution.velocity(0, X, 40.0), 1.0, tolerance) << X;
+    EXPECT_NEAR(solution.axial_force(0, X, 40.0), 0.0, tolerance) << X;
+    EXPECT_NEAR(solution.displacement(0, X, 40.0), 0.0, tolerance) << X;
+  }
+}
+
 TEST(ExactBarSolution, RejectsBadInput)
 {
   // Invalid data must be refused with a message naming the culprit; no tolerance involved.

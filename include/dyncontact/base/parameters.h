@@ -165,6 +165,8 @@ struct GeometryParameters
   std::vector<BarParameters> bars;
   bool wall_enabled;
   double wall_position;
+  /// the left end of the leftmost bar is clamped (u = 0 there)
+  bool clamped_left_end;
 
   static void declare_parameters(ParameterHandler& prm, unsigned int n_bars);
   void parse_parameters(ParameterHandler& prm);

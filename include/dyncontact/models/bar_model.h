@@ -33,6 +33,8 @@ public:
    */
   ContactDescription<1> contact_description(const NodeIndex<1>& nodes) const override;
   std::vector<Node<1>> monitor_nodes(const NodeIndex<1>& nodes) const override;
+  /** The leftmost bar's left end node, if Geometry/clamped left end. */
+  std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<1>& nodes) const override;
   Tensor<1, 1> impact_direction() const override;
   void write_reference(const std::string& directory,
                        const std::vector<double>& times,

@@ -100,13 +100,16 @@ class ExactBarSolution
 public:
   /**
    * Track the waves in @p bars (indices in this order are used in all queries) from t = 0 to
-   * @p end_time. An empty @p wall_position means that there is no wall. Throws
+   * @p end_time. An empty @p wall_position means that there is no wall; @p clamped_left_end
+   * holds the left end of the leftmost bar at rest (v = 0 there from t = 0 on, so a wave leaves it
+   * at once if that bar moves: the incoming L is reflected as R = -L). Throws
    * std::invalid_argument for non-positive length, Young's modulus, density or area, for
    * overlapping bars, for a wall left of a bar's right end and for a non-positive end time.
    */
   ExactBarSolution(const std::vector<ExactBar>& bars,
                    std::optional<double> wall_position,
-                   double end_time);
+                   double end_time,
+                   bool clamped_left_end = false);
 
   /// The number of bars.
   unsigned int n_bars() const;
@@ -184,12 +187,13 @@ private:
   };
 
   /**
-   * Build the wave histories from t = 0 to end_time, given the bars at both ends of the row and
-   * the initial gap of every interface.
+   * Build the wave histories from t = 0 to end_time, given the bars at both ends of the row, the
+   * end conditions (wall, clamp) and the initial gap of every interface.
    */
   void track_events(unsigned int leftmost_bar,
                     unsigned int rightmost_bar,
                     bool has_wall,
+                    bool clamped_left_end,
                     std::vector<double> gaps);
 
   /// The bar @p bar, after checking that it exists and that 0 <= @p t <= end_time.
