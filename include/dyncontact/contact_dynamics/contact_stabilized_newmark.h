@@ -18,7 +18,9 @@ namespace dyncontact
  * (beta = 1/4, gamma = 1/2) this is the paper's scheme, v_{n+1} = v_n + 2/dt (u_{n+1} - u^pred),
  * which is energy dissipative at contact (Deuflhard, Krause & Ertel, Theorem 4.2, linear
  * elasticity) and free of the oscillations of the contact force and velocity of classical
- * Newmark; other (beta, gamma) are the same construction without that proof. Away from contact
+ * Newmark. The parameters allow only that rule (ParameterReader: exit 2 otherwise): with the
+ * paper's beta = 0.001 the construction gained 3300 times the initial energy on 6.1, hidden from
+ * the energy guard by the algorithmic energy's negative a.Ma weight. Away from contact
  * (no pair closing in the predictor, no contact force at t_n) it is classical Newmark, bit for bit.
  *
  * The projection: the pairs whose gap at u_n + dt v_n is negative are closed together by nodal

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# Every contact-dynamics treatment (Contact/dynamics) on every benchmark problem with an exact or
+# converged reference (issue 14), then the report: bench/results/schemes/report.md (tables of the
+# metrics) and one PNG per problem (force, interface velocity and energy against the reference).
+# Problems:
+#   6.1 bar on a rigid wall, 6.2 identical bars, 6.3 dissimilar bars (the paper's prm files);
+#   the stiff striker (6.2 with bar 1 at E = 1e4, trapezoidal rule) and its mirror, the soft
+#   striker (bar 2 at E = 1e4); the Signorini bar (10 periods); the spheres (default prm, paper's
+#   dt), the coarse spheres at dt = 0.02 and the dissimilar spheres.
+# A run that fails is reported in its cells with its error line. About 5 minutes.
+#   bench/schemes.sh
+set -euo pipefail
+source "$(dirname "$0")/common.sh"
+results=bench/results/schemes
+rm -rf "$results"
+mkdir -p "$results"
+schemes=(none taylor-papadopoulos mass-redistribution contact-stabilized)
+trapezoidal=(--set "Time integration/beta=0.25")
+coarse_spheres=(--set "Mesh/file=../meshes/two_spheres.geo"
+  --set "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3"
+  --set "Contact/discretization=node-to-node" --set "Newton/method=full")
+
+run() # problem scheme prm arguments...
+{
+  local problem=$1 scheme=$2 prm=$3
+  shift 3
+  local output="$results/$problem/$scheme"
+  mkdir -p "$output"
+  /usr/bin/time -f "%e" -o "$output/wall_time" build/dyncontact "$prm" --quiet --output "$output" \
+    --set "Output/vtu interval=0" --set "Contact/dynamics=$scheme" "$@" \
+    >"$output/log" 2>&1 || echo "exit $?" >"$output/failed"
+}
+
+for scheme in "${schemes[@]}"; do
+  run bar_rigid_wall "$scheme" prm/bar_rigid_wall.prm
+  run bars_identical "$scheme" prm/bars_identical.prm
+  run bars_dissimilar "$scheme" prm/bars_dissimilar.prm
+  run stiff_striker "$scheme" prm/bars_identical.prm "${trapezoidal[@]}" \
+    --set "Geometry/Bar 1/Young's modulus=1e4"
+  run soft_striker "$scheme" prm/bars_identical.prm "${trapezoidal[@]}" \
+    --set "Geometry/Bar 2/Young's modulus=1e4"
+  run signorini_bar "$scheme" prm/signorini_bar.prm
+  run spheres "$scheme" prm/spheres_rho0.001.prm --set "Time integration/end time=2.16"
+  run spheres_dt0.02 "$scheme" prm/spheres_rho0.001.prm "${coarse_spheres[@]}" \
+    --set "Time integration/time step=0.02" --set "Time integration/end time=2.16"
+  run dissimilar_spheres "$scheme" prm/dissimilar_spheres.prm
+done
+/usr/bin/python3 bench/schemes_report.py "$results" "${schemes[@]}"
