@@ -15,6 +15,7 @@ namespace
 template <int dim>
 Vector<double> projection_shift(const ContactConstraints<dim>& contact,
                                 const Vector<double>& lumped_mass,
+                                const std::vector<bool>& is_fixed,
                                 const Vector<double>& position)
 {
   Vector<double> shift(position.size());
@@ -37,7 +38,7 @@ Vector<double> projection_shift(const ContactConstraints<dim>& contact,
     Eigen::VectorXd opening(rows.size());
     for (unsigned int r = 0; r < rows.size(); ++r)
       opening[r] = -contact.gap(rows[r], position);
-    const PairMassSystem<dim> system(std::move(pairs), lumped_mass);
+    const PairMassSystem<dim> system(std::move(pairs), lumped_mass, is_fixed);
     const Eigen::VectorXd mu = system.solve(opening);
     bool changed             = false;
     for (unsigned int r = 0; r < rows.size(); ++r)
@@ -50,9 +51,9 @@ Vector<double> projection_shift(const ContactConstraints<dim>& contact,
       continue;
     for (unsigned int i = 0; i < system.n_nodes(); ++i)
     {
-      const Tensor<1, dim> force = system.nodal_force(i, mu);
+      const Tensor<1, dim> change = system.nodal_change(i, mu);
       for (unsigned int d = 0; d < dim; ++d)
-        shift[system.node(i).dofs[d]] += force[d] / system.mass(i);
+        shift[system.node(i).dofs[d]] += change[d];
     }
     Vector<double> projected = position;
     projected += shift;
@@ -83,7 +84,7 @@ void ContactStabilizedNewmark<dim>::adjust_predictor(const RateMap& rates,
   // The position part u_n + dt v_n, projected.
   Vector<double> position = start.displacement;
   position.add(rates.time_step, start.velocity);
-  const Vector<double> shift = projection_shift(contact, lumped_mass, position);
+  const Vector<double> shift = projection_shift(contact, lumped_mass, start.is_fixed, position);
   for (types::global_dof_index i = 0; i < predictor.size(); ++i)
   {
     if ((contact_force[i] == 0. && shift[i] == 0.) || start.is_fixed[i])

@@ -6,7 +6,8 @@ namespace dyncontact
 {
 template <int dim>
 PairMassSystem<dim>::PairMassSystem(std::vector<const ContactPair<dim>*> pairs_in,
-                                    const Vector<double>& lumped_mass)
+                                    const Vector<double>& lumped_mass,
+                                    const std::vector<bool>& is_fixed)
     : pairs(std::move(pairs_in))
 {
   // Every node of the pairs with its pairs' rows and coefficients, keyed by its first DoF.
@@ -18,6 +19,8 @@ PairMassSystem<dim>::PairMassSystem(std::vector<const ContactPair<dim>*> pairs_i
           NodeAppearances& entry = by_dof[node.dofs[0]];
           entry.node             = &node;
           entry.mass             = lumped_mass[node.dofs[0]];
+          for (unsigned int d = 0; d < dim; ++d)
+            entry.free[d] = !is_fixed.empty() && is_fixed[node.dofs[d]] ? 0. : 1.;
           entry.appearances.push_back({row, coefficient});
         });
   std::vector<Eigen::Triplet<double>> entries;
@@ -25,10 +28,13 @@ PairMassSystem<dim>::PairMassSystem(std::vector<const ContactPair<dim>*> pairs_i
   {
     for (const Appearance& k : entry.appearances)
       for (const Appearance& l : entry.appearances)
-        entries.emplace_back(k.row,
-                             l.row,
-                             k.coefficient * l.coefficient *
-                                 (pairs[k.row]->normal * pairs[l.row]->normal) / entry.mass);
+      {
+        double free_normals = 0.; // n_k . n_l over the node's free components
+        for (unsigned int d = 0; d < dim; ++d)
+          free_normals += entry.free[d] * pairs[k.row]->normal[d] * pairs[l.row]->normal[d];
+        entries.emplace_back(
+            k.row, l.row, k.coefficient * l.coefficient * free_normals / entry.mass);
+      }
     nodes.push_back(std::move(entry));
   }
   Eigen::SparseMatrix<double> matrix(pairs.size(), pairs.size());
@@ -37,12 +43,14 @@ PairMassSystem<dim>::PairMassSystem(std::vector<const ContactPair<dim>*> pairs_i
 }
 
 template <int dim>
-Tensor<1, dim> PairMassSystem<dim>::nodal_force(const unsigned int i,
-                                                const Eigen::VectorXd& mu) const
+Tensor<1, dim> PairMassSystem<dim>::nodal_change(const unsigned int i,
+                                                 const Eigen::VectorXd& mu) const
 {
   Tensor<1, dim> force;
   for (const Appearance& k : nodes[i].appearances)
     force += k.coefficient * mu[k.row] * pairs[k.row]->normal;
+  for (unsigned int d = 0; d < dim; ++d)
+    force[d] = nodes[i].free[d] * force[d] / nodes[i].mass;
   return force;
 }
 

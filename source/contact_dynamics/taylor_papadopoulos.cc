@@ -40,7 +40,7 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
   // Eqs. (21) and (22), for pairs that may share nodes (node-to-segment): the multipliers of the
   // rate constraints [[a]].n = 0 and [[v]].n = 0 of all active pairs at once.
   const unsigned int n_active = active.size();
-  const PairMassSystem<dim> system(std::move(active), lumped_mass);
+  const PairMassSystem<dim> system(std::move(active), lumped_mass, step.is_fixed);
   const Eigen::VectorXd lambda_a =
       system.solve(Eigen::Map<const Eigen::VectorXd>(predicted_position_jump.data(), n_active));
   const Eigen::VectorXd lambda_v =
@@ -50,14 +50,13 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
   // gives a_{n+1}, the velocity update from it shifted by M^-1 B^T lambda_v gives v_{n+1}.
   for (unsigned int i = 0; i < system.n_nodes(); ++i)
   {
-    const Tensor<1, dim> shift_a = system.nodal_force(i, lambda_a);
-    const Tensor<1, dim> shift_v = system.nodal_force(i, lambda_v);
-    const double mass            = system.mass(i);
+    const Tensor<1, dim> shift_a = system.nodal_change(i, lambda_a);
+    const Tensor<1, dim> shift_v = system.nodal_change(i, lambda_v);
     for (unsigned int d = 0; d < dim; ++d)
     {
       const types::global_dof_index dof = system.node(i).dofs[d];
-      a_new[dof] = rates.acceleration(step.increment[dof] + shift_a[d] / mass);
-      v_new[dof] = rates.velocity(v_old[dof], a_old[dof], a_new[dof]) - shift_v[d] / mass;
+      a_new[dof]                        = rates.acceleration(step.increment[dof] + shift_a[d]);
+      v_new[dof] = rates.velocity(v_old[dof], a_old[dof], a_new[dof]) - shift_v[d];
     }
   }
 }

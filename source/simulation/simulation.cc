@@ -397,7 +397,7 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
       integrator.rate_map(),
       *contact,
       mass,
-      {old_displacement, old_velocity, old_acceleration, displacement, increment},
+      {old_displacement, old_velocity, old_acceleration, displacement, increment, is_fixed_dof},
       velocity,
       acceleration);
   accumulate_impulses(before);

@@ -19,16 +19,21 @@ namespace dyncontact
  * coefficients sum to zero). Shared by the treatments that act on several pairs at once, which may
  * share nodes (node-to-segment): the rate constraints of TaylorPapadopoulos (paper eqs. 21-22) and
  * the predictor projection of ContactStabilizedNewmark. Needs positive masses at the pairs' nodes.
+ * A fixed DoF (e.g. u_r = 0 of a node on the symmetry axis) has infinite mass: it takes no part
+ * in S and no change, so a pair whose normal is not exactly along the free components is closed by
+ * them alone.
  */
 template <int dim>
 class PairMassSystem
 {
 public:
   /**
-   * `pairs` (not owned, they must outlive this object) in row order; `lumped_mass` per DoF [mass].
-   * Factorizes S (sparse LDL^T, Eigen).
+   * `pairs` (not owned, they must outlive this object) in row order; `lumped_mass` per DoF [mass];
+   * `is_fixed` per DoF (empty: none fixed). Factorizes S (sparse LDL^T, Eigen).
    */
-  PairMassSystem(std::vector<const ContactPair<dim>*> pairs, const Vector<double>& lumped_mass);
+  PairMassSystem(std::vector<const ContactPair<dim>*> pairs,
+                 const Vector<double>& lumped_mass,
+                 const std::vector<bool>& is_fixed);
 
   /** The number of pairs (rows of S). */
   unsigned int size() const { return pairs.size(); }
@@ -42,11 +47,11 @@ public:
   /** Node `i` (< n_nodes()) of the pairs. */
   const Node<dim>& node(const unsigned int i) const { return *nodes[i].node; }
 
-  /** The lumped mass of node `i` [mass]. */
-  double mass(const unsigned int i) const { return nodes[i].mass; }
-
-  /** (B^T mu) at node `i`: sum over the pairs k it appears in of c_kj mu_k n_k. */
-  Tensor<1, dim> nodal_force(unsigned int i, const Eigen::VectorXd& mu) const;
+  /**
+   * (M^-1 B^T mu) at node `i`: the sum over the pairs k it appears in of c_kj mu_k n_k, divided by
+   * the node's mass, zero in its fixed components [mu over mass].
+   */
+  Tensor<1, dim> nodal_change(unsigned int i, const Eigen::VectorXd& mu) const;
 
 private:
   /** One appearance of a node in a pair: the pair's row and the node's coefficient c_kj. */
@@ -55,11 +60,12 @@ private:
     unsigned int row;
     double coefficient;
   };
-  /** A node of the pairs with its mass and all its appearances. */
+  /** A node of the pairs with its mass, its free components (1, or 0: fixed) and appearances. */
   struct NodeAppearances
   {
     const Node<dim>* node;
     double mass;
+    Tensor<1, dim> free;
     std::vector<Appearance> appearances;
   };
 

@@ -4,6 +4,8 @@
 
 #include <deal.II/lac/vector.h>
 
+#include <vector>
+
 namespace dyncontact
 {
 /**
@@ -57,5 +59,6 @@ struct StepStates
   const Vector<double>& old_acceleration;
   const Vector<double>& new_displacement;
   const Vector<double>& increment; ///< u_{n+1} - u~, the converged displacement minus the predictor
+  const std::vector<bool>& is_fixed; ///< per DoF: fixed (e.g. u_r = 0 on an axis), rates stay 0
 };
 } // namespace dyncontact
