@@ -146,14 +146,19 @@ def plot(results, problem, title, schemes):
         if contact_times and window is None:
             span = contact_times[-1] - contact_times[0]
             window = (contact_times[0] - 0.2 * span, contact_times[-1] + 0.3 * span)
-        axes[0].plot(times, column(history, "contact_force"), label=scheme, lw=1)
-        axes[1].plot(times, column(history, "v_tip_1"), label=scheme, lw=1)
+        color = "C%d" % schemes.index(scheme)  # the same colour for a scheme in every figure
+        axes[0].plot(times, column(history, "contact_force"), color=color, label=scheme, lw=1)
+        axes[1].plot(times, column(history, "v_tip_1"), color=color, label=scheme, lw=1)
         energy = column(history, "total_energy")
-        axes[2].plot(times, [e / energy[0] for e in energy], label=scheme, lw=1)
-    for scheme in schemes:  # the reference, from the first run that wrote it
+        axes[2].plot(times, [e / energy[0] for e in energy], color=color, label=scheme, lw=1)
+    for scheme in schemes:  # the reference, from the first run that completed
+        if failure(os.path.join(results, problem, scheme)) is not None:
+            continue
         reference = reference_force(os.path.join(results, problem, scheme), problem)
         if reference:
             axes[0].plot(*reference, "k--", lw=1.2, label="exact" if "spheres" not in problem else "finite-sphere law")
+            # Zoom on the reference's range: a chattering scheme's peaks (up to 10x) are clipped.
+            axes[0].set_ylim(-0.1 * max(reference[1]), 3 * max(reference[1]))
             exact_path = os.path.join(results, problem, scheme, "exact.csv")
             if os.path.exists(exact_path):
                 exact = read_csv(exact_path)
