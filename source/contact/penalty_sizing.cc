@@ -15,9 +15,14 @@ double penalty_spring_omega_dt(const ContactConstraints<dim>& contact,
   if (contact.contact_formulation() != ContactFormulation::penalty)
     return spring_omega_dt;
   for (const auto& pair : contact.candidate_pairs())
-    spring_omega_dt = std::max(
-        spring_omega_dt,
-        time_step * std::sqrt(pair.penalty_stiffness * pair.inverse_effective_mass(lumped_mass)));
+  {
+    // A spring on a massless node (Contact/dynamics = mass-redistribution) is no mode of its own:
+    // that node follows its neighbours quasi-statically, in series with the spring.
+    const double inverse_mass = pair.inverse_effective_mass(lumped_mass);
+    if (std::isfinite(inverse_mass))
+      spring_omega_dt =
+          std::max(spring_omega_dt, time_step * std::sqrt(pair.penalty_stiffness * inverse_mass));
+  }
   return spring_omega_dt;
 }
 

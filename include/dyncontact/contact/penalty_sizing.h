@@ -18,7 +18,8 @@ struct PenaltySizingInput
  * The stiffest penalty spring against the time step: the largest dt sqrt(k / m_r) over the
  * candidate pairs, k a pair's penalty stiffness and m_r the reduced lumped mass of its nodes,
  * 1 / m_r = 1 / m_slave + sum_i w_i^2 / m_i (the slave node's own mass against a rigid wall). Zero
- * for Lagrange multipliers. `lumped_mass` has one entry per DoF.
+ * for Lagrange multipliers. Pairs with a massless node (mass redistribution) are left out: their
+ * spring has no mode of its own. `lumped_mass` has one entry per DoF.
  */
 template <int dim>
 double penalty_spring_omega_dt(const ContactConstraints<dim>& contact,
