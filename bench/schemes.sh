@@ -8,13 +8,14 @@
 #   striker (bar 2 at E = 1e4); the Signorini bar (10 periods); the spheres (default prm, paper's
 #   dt), the coarse spheres at dt = 0.02 and the dissimilar spheres.
 # A run that fails is reported in its cells with its error line. About 5 minutes.
-#   bench/schemes.sh
+#   bench/schemes.sh                       (every scheme)
+#   SCHEMES="persistency none" bench/schemes.sh   (a subset, into the same directory)
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
 results=bench/results/schemes
 rm -rf "$results"
 mkdir -p "$results"
-schemes=(none taylor-papadopoulos mass-redistribution contact-stabilized)
+read -r -a schemes <<<"${SCHEMES:-none taylor-papadopoulos mass-redistribution contact-stabilized persistency velocity-update}"
 trapezoidal=(--set "Time integration/beta=0.25")
 coarse_spheres=(--set "Mesh/file=../meshes/two_spheres.geo"
   --set "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3"

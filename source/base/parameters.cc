@@ -616,8 +616,16 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
                     "force, without the oscillation of massive contact nodes. contact-stabilized: "
                     "the contact-stabilized Newmark of Deuflhard, Krause & Ertel (2008): the "
                     "predictor projected onto the admissible set, the old contact force left out "
-                    "of the explicit part; energy dissipative at contact with beta = 1/4, gamma = "
-                    "1/2.");
+                    "of the explicit part; energy dissipative at contact. persistency: the "
+                    "gap-rate (persistency) condition of Laursen & Chawla (1997) on the pairs "
+                    "predicted to close, one contact force per step; conserves energy through "
+                    "impact and release, contact may act across a gap of one step's approach. "
+                    "velocity-update: impenetrability with one contact force per step, then a "
+                    "velocity jump that zeroes every active pair's relative normal velocity "
+                    "(Laursen & Love 2002); dissipates at impact only. contact-stabilized, "
+                    "persistency and velocity-update need beta = 1/4, gamma = 1/2; "
+                    "taylor-papadopoulos, persistency and velocity-update need Lagrange "
+                    "multipliers.");
   prm.declare_entry("formulation",
                     "lagrange multiplier",
                     Patterns::Selection(contact_formulation_names().selection()),
@@ -1078,22 +1086,33 @@ void ParameterReader::resolve_and_check()
     p.warnings.push_back("Time integration/scheme is deprecated: write Contact/dynamics = " +
                          dynamics_names.name(meant) + " instead of scheme = " + old_name + ".");
   }
-  if (p.contact.dynamics == ContactDynamicsKind::contact_stabilized &&
-      (p.time.beta != 0.25 || p.time.gamma != 0.5))
-    throw InputError("Contact/dynamics = contact-stabilized needs the trapezoidal rule, Time "
-                     "integration/beta = 0.25 and gamma = 0.5 (given beta = " +
-                     format_number(p.time.beta) + ", gamma = " + format_number(p.time.gamma) +
-                     "): Deuflhard, Krause & Ertel's scheme and its energy bound are built on it; "
-                     "with the paper's beta = 0.001 its projected contact nodes gained 3300 times "
-                     "the initial energy on 6.1.");
+  const std::string dynamics = "Contact/dynamics = " + dynamics_names.name(p.contact.dynamics);
+  const bool one_contact_force_per_step =
+      p.contact.dynamics == ContactDynamicsKind::contact_stabilized ||
+      p.contact.dynamics == ContactDynamicsKind::persistency ||
+      p.contact.dynamics == ContactDynamicsKind::velocity_update;
+  if (one_contact_force_per_step && (p.time.beta != 0.25 || p.time.gamma != 0.5))
+    throw InputError(dynamics + " needs the trapezoidal rule, Time integration/beta = 0.25 and " +
+                     "gamma = 0.5 (given beta = " + format_number(p.time.beta) +
+                     ", gamma = " + format_number(p.time.gamma) +
+                     "): its one contact force per step and its energy argument are built on it; "
+                     "with the paper's beta = 0.001 contact-stabilized's projected contact nodes "
+                     "gained 3300 times the initial energy on 6.1.");
   if (p.contact.formulation == ContactFormulation::penalty &&
-      p.contact.dynamics == ContactDynamicsKind::taylor_papadopoulos)
+      (p.contact.dynamics == ContactDynamicsKind::taylor_papadopoulos ||
+       p.contact.dynamics == ContactDynamicsKind::velocity_update))
     throw InputError(
-        "Contact/formulation = penalty cannot be combined with Contact/dynamics = "
-        "taylor-papadopoulos: the rate correction assumes exactly closed pairs; a penalized pair "
-        "stays penetrated and the correction glues it (the bars of case 6.2 never separate). Use "
-        "Contact/dynamics = none with a penalty, or Lagrange multipliers with "
-        "taylor-papadopoulos.");
+        "Contact/formulation = penalty cannot be combined with " + dynamics +
+        ": its rate correction assumes exactly closed pairs; a penalized pair stays penetrated "
+        "and the correction glues it (the bars of case 6.2 never separate with "
+        "taylor-papadopoulos). Use Contact/dynamics = none, mass-redistribution or "
+        "contact-stabilized with a penalty, or Lagrange multipliers.");
+  if (p.contact.formulation == ContactFormulation::penalty &&
+      p.contact.dynamics == ContactDynamicsKind::persistency)
+    throw InputError("Contact/formulation = penalty cannot be combined with " + dynamics +
+                     ": a penalty on the gap rate dissipates, and Armero & Petocz's "
+                     "energy-conserving penalty force is not implemented. Use Lagrange "
+                     "multipliers.");
 }
 
 void ParameterReader::write_records(const std::string& directory) const

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace dyncontact
 {
@@ -60,6 +62,24 @@ double ContactConstraints<dim>::gap(const unsigned int pair_index,
                                     const Vector<double>& displacement) const
 {
   return pairs[pair_index].gap(displacement);
+}
+
+template <int dim>
+void ContactConstraints<dim>::set_reference_gaps(std::vector<double> reference)
+{
+  if (!reference.empty() && reference.size() != pairs.size())
+    throw std::invalid_argument(
+        "ContactConstraints::set_reference_gaps: " + std::to_string(reference.size()) +
+        " gaps for " + std::to_string(pairs.size()) + " pairs");
+  reference_gaps = std::move(reference);
+}
+
+template <int dim>
+double ContactConstraints<dim>::constraint_gap(const unsigned int pair_index,
+                                               const Vector<double>& displacement) const
+{
+  const double g = gap(pair_index, displacement);
+  return reference_gaps.empty() ? g : g - reference_gaps[pair_index];
 }
 
 template <int dim>
@@ -151,7 +171,7 @@ void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& dis
             add(node.dofs[d], row, entry);
           }
         });
-    constraint_residual[k] = -gap(k, displacement);
+    constraint_residual[k] = -constraint_gap(k, displacement);
     if (formulation == ContactFormulation::penalty)
     {
       add(row, row, -1. / pairs[k].penalty_stiffness);
@@ -174,7 +194,7 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
   bool changed = false;
   std::vector<unsigned int> tensile_pairs;
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (!active[k] && gap(k, displacement) < -gap_tolerance)
+    if (!active[k] && constraint_gap(k, displacement) < -gap_tolerance)
     {
       active[k] = true;
       changed   = true;

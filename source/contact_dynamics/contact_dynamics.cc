@@ -2,7 +2,9 @@
 #include <dyncontact/contact_dynamics/contact_stabilized_newmark.h>
 #include <dyncontact/contact_dynamics/mass_redistribution.h>
 #include <dyncontact/contact_dynamics/no_rate_correction.h>
+#include <dyncontact/contact_dynamics/persistency.h>
 #include <dyncontact/contact_dynamics/taylor_papadopoulos.h>
+#include <dyncontact/contact_dynamics/velocity_update.h>
 
 namespace dyncontact
 {
@@ -12,7 +14,9 @@ const NameTable<ContactDynamicsKind>& contact_dynamics_names()
       {"none", ContactDynamicsKind::none},
       {"taylor-papadopoulos", ContactDynamicsKind::taylor_papadopoulos},
       {"mass-redistribution", ContactDynamicsKind::mass_redistribution},
-      {"contact-stabilized", ContactDynamicsKind::contact_stabilized}};
+      {"contact-stabilized", ContactDynamicsKind::contact_stabilized},
+      {"persistency", ContactDynamicsKind::persistency},
+      {"velocity-update", ContactDynamicsKind::velocity_update}};
   return names;
 }
 
@@ -29,6 +33,10 @@ std::unique_ptr<ContactDynamics<dim>> create_contact_dynamics(const ContactDynam
     return std::make_unique<MassRedistribution<dim>>();
   case ContactDynamicsKind::contact_stabilized:
     return std::make_unique<ContactStabilizedNewmark<dim>>();
+  case ContactDynamicsKind::persistency:
+    return std::make_unique<Persistency<dim>>();
+  case ContactDynamicsKind::velocity_update:
+    return std::make_unique<VelocityUpdate<dim>>();
   }
   throw std::logic_error("create_contact_dynamics: a ContactDynamicsKind without a treatment");
 }

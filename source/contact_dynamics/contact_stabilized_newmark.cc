@@ -71,30 +71,15 @@ Vector<double> projection_shift(const ContactConstraints<dim>& contact,
 } // namespace
 
 template <int dim>
-void ContactStabilizedNewmark<dim>::adjust_predictor(const RateMap& rates,
-                                                     const ContactConstraints<dim>& contact,
-                                                     const Vector<double>& lumped_mass,
-                                                     const StepStart& start,
-                                                     Vector<double>& old_acceleration,
-                                                     Vector<double>& predictor) const
+Vector<double>
+ContactStabilizedNewmark<dim>::predictor_shift(const RateMap& rates,
+                                               const ContactConstraints<dim>& contact,
+                                               const Vector<double>& lumped_mass,
+                                               const StepStart& start) const
 {
-  // The free acceleration where the contact force of t_n acts.
-  Vector<double> contact_force(predictor.size());
-  contact.add_contact_forces(contact_force);
-  // The position part u_n + dt v_n, projected.
   Vector<double> position = start.displacement;
   position.add(rates.time_step, start.velocity);
-  const Vector<double> shift = projection_shift(contact, lumped_mass, start.is_fixed, position);
-  for (types::global_dof_index i = 0; i < predictor.size(); ++i)
-  {
-    if ((contact_force[i] == 0. && shift[i] == 0.) || start.is_fixed[i])
-      continue; // classical Newmark, bit for bit
-    if (contact_force[i] != 0.)
-      old_acceleration[i] = (start.external_force[i] - start.internal_force[i]) / lumped_mass[i];
-    predictor[i] = rates.predicted_displacement(
-                       start.displacement[i], start.velocity[i], old_acceleration[i]) +
-                   shift[i];
-  }
+  return projection_shift(contact, lumped_mass, start.is_fixed, position);
 }
 
 template class ContactStabilizedNewmark<1>;

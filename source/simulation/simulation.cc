@@ -376,13 +376,11 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   integrator.predict(old_displacement, old_velocity, before.acceleration, predictor);
   // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).
   Vector<double> old_acceleration = before.acceleration;
+  const typename ContactDynamics<dim>::StepStart start{
+      old_displacement, old_velocity, before.internal_force, before.external_force, is_fixed_dof};
   contact_dynamics->adjust_predictor(
-      integrator.rate_map(),
-      *contact,
-      mass,
-      {old_displacement, old_velocity, before.internal_force, before.external_force, is_fixed_dof},
-      old_acceleration,
-      predictor);
+      integrator.rate_map(), *contact, mass, start, old_acceleration, predictor);
+  contact->set_reference_gaps(contact_dynamics->reference_gaps(*contact, start, predictor));
   Vector<double> last_configuration = old_displacement; // as an increment over the predictor
   last_configuration -= predictor;
   external_force    = loads->force(time);

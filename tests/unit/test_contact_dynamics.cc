@@ -100,17 +100,25 @@ struct TwoMassStep
 /**
  * The corrected normal rates of both nodes equal the mass-weighted means of the classical ones
  * (relative 1e-13: a few roundings of numbers of order 10); tangential components unchanged
- * (exactly up to the normal's rounding, 1e-14).
+ * (exactly up to the normal's rounding, 1e-14). Taylor-Papadopoulos corrects velocities and
+ * accelerations; the velocity update (Laursen & Love 2002) corrects the velocities only and keeps
+ * the accelerations bit for bit.
  */
 template <int dim>
-void expect_mean_normal_rates(const Tensor<1, dim>& normal)
+void expect_mean_normal_rates(const Tensor<1, dim>& normal, const ContactDynamicsKind kind)
 {
   TwoMassStep<dim> step(normal, false);
   ASSERT_TRUE(step.contact->is_active(0));
   const Vector<double> classical_v = step.v, classical_a = step.a;
-  step.correct(ContactDynamicsKind::taylor_papadopoulos);
-  for (const auto& [corrected, classical] :
-       {std::pair(&step.v, &classical_v), std::pair(&step.a, &classical_a)})
+  step.correct(kind);
+  std::vector<std::pair<const Vector<double>*, const Vector<double>*>> corrected_fields{
+      {&step.v, &classical_v}};
+  if (kind == ContactDynamicsKind::taylor_papadopoulos)
+    corrected_fields.emplace_back(&step.a, &classical_a);
+  else
+    for (unsigned int i = 0; i < 2 * dim; ++i)
+      EXPECT_EQ(step.a[i], classical_a[i]);
+  for (const auto& [corrected, classical] : corrected_fields)
   {
     const double mean = (1. * step.normal_part(*classical, 0, normal) +
                          3. * step.normal_part(*classical, 1, normal)) /
@@ -132,13 +140,21 @@ void expect_mean_normal_rates(const Tensor<1, dim>& normal)
 
 TEST(ContactDynamics, TaylorPapadopoulosGivesBothNodesTheMassWeightedMeanNormalRates1D)
 {
-  expect_mean_normal_rates<1>(Tensor<1, 1>({1.}));
+  expect_mean_normal_rates<1>(Tensor<1, 1>({1.}), ContactDynamicsKind::taylor_papadopoulos);
 }
 
 TEST(ContactDynamics, TaylorPapadopoulosGivesBothNodesTheMassWeightedMeanNormalRates2D)
 {
   // An oblique normal: the correction acts along it and keeps the tangential rates.
-  expect_mean_normal_rates<2>(Tensor<1, 2>({0.6, 0.8}));
+  expect_mean_normal_rates<2>(Tensor<1, 2>({0.6, 0.8}), ContactDynamicsKind::taylor_papadopoulos);
+}
+
+// The velocity update's defining property (Laursen & Love 2002): after the step the pair's
+// relative normal velocity is zero, by a momentum-conserving jump, the mass-weighted mean.
+TEST(ContactDynamics, VelocityUpdateGivesBothNodesTheMassWeightedMeanNormalVelocity)
+{
+  expect_mean_normal_rates<1>(Tensor<1, 1>({1.}), ContactDynamicsKind::velocity_update);
+  expect_mean_normal_rates<2>(Tensor<1, 2>({0.6, 0.8}), ContactDynamicsKind::velocity_update);
 }
 
 // Against a rigid wall (infinite weight) the corrected normal rates of the node are the wall's,
@@ -284,6 +300,46 @@ TEST(ContactDynamics, ContactStabilizedProjectsThePredictorAndDropsTheOldContact
     EXPECT_NEAR(mass[0] * shift[0] + mass[1] * shift[1], 0., 1e-15);
   }
   EXPECT_DOUBLE_EQ(stabilized->contact_force_factor(rates), 0.5);
+}
+
+// Persistency (Laursen & Chawla 1997): two masses 0.01 apart on a line. Closing at relative speed
+// 1 with dt = 0.1, the predictor overlaps them, so the pair persists: its constraint becomes the
+// gap rate, g_{n+1} - g_n >= 0 with g_n = 0.01, and it enters the active set at g = 0.005 > 0
+// (a gap decrease) and is driven back to g = 0.01 (residual -(g - g_n)). Opening, the predictor
+// keeps them apart and the pair keeps the impenetrability condition g >= 0. Exact: a subtraction
+// of numbers of order 0.01 (1e-17).
+TEST(ContactDynamics, PersistencyTurnsThePairsPredictedToCloseIntoGapRateConstraints)
+{
+  ContactPair<1> pair;
+  pair.slave             = {0, Point<1>(0.), {{0}}};
+  pair.masters           = {{Node<1>{1, Point<1>(0.01), {{1}}}, 1.}};
+  pair.normal            = Tensor<1, 1>({1.});
+  pair.penalty_stiffness = 0.;
+  const auto persistency = create_contact_dynamics<1>(ContactDynamicsKind::persistency);
+  const std::vector<bool> no_fixed_dofs(2, false);
+  Vector<double> u(2), zero(2), halfway(2), predictor(2), residual(1);
+  halfway[0] = 0.005; // the gap halved: 0.005
+  for (const double approach_speed : {1., -1.})
+  {
+    ContactConstraints<1> contact({pair}, ContactFormulation::lagrange_multiplier);
+    Vector<double> v(2);
+    v[0]      = 0.75 * approach_speed;
+    v[1]      = -0.25 * approach_speed;
+    predictor = u;
+    predictor.add(0.1, v);
+    const auto reference =
+        persistency->reference_gaps(contact, {u, v, zero, zero, no_fixed_dofs}, predictor);
+    ASSERT_EQ(reference.size(), 1u);
+    const bool closing = approach_speed > 0.;
+    EXPECT_DOUBLE_EQ(reference[0], closing ? 0.01 : 0.) << approach_speed;
+    contact.set_reference_gaps(reference);
+    EXPECT_EQ(contact.update_active_set(halfway, 1e-12, 0.), closing) << approach_speed;
+    contact.assemble_constraint_rows(halfway, 1., nullptr, residual);
+    if (closing)
+    {
+      EXPECT_NEAR(residual[0], 0.005, 1e-17);
+    }
+  }
 }
 
 // Node-to-segment pairs sharing a master face: two slave nodes against the same three master nodes

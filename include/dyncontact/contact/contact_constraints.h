@@ -76,6 +76,15 @@ public:
   /** Gap of candidate `pair` at displacement u (negative = penetration). */
   double gap(unsigned int pair, const Vector<double>& displacement) const;
 
+  /**
+   * The gap each pair's constraint holds at or above, per candidate pair [length]: the solve
+   * enforces g_k(u) - reference_k >= 0 (equal to it on the active pairs) instead of g_k(u) >= 0.
+   * Empty means zero for every pair, the impenetrability condition and the default. A gap-rate
+   * (persistency) treatment sets g_k(u_n) for the step's persisting pairs, so that the constraint
+   * reads g_{n+1} - g_n >= 0 (Persistency). Throws std::invalid_argument for a wrong length.
+   */
+  void set_reference_gaps(std::vector<double> reference);
+
   /** Couples row/column n_dofs + k of candidate k with the DoFs of its nodes. */
   void add_to_sparsity(DynamicSparsityPattern& sparsity, types::global_dof_index n_dofs) const;
 
@@ -178,6 +187,9 @@ public:
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
 private:
+  /** g_k(u) - reference_k: what the solve constrains (see set_reference_gaps()). */
+  double constraint_gap(unsigned int pair, const Vector<double>& displacement) const;
+
   /** Calls f(dof) for every DoF candidate pair `k` can couple (see contact_dofs()). */
   template <typename Function>
   void for_each_coupled_dof(unsigned int k, const Function& f) const;
@@ -197,5 +209,6 @@ private:
   ContactFormulation formulation;
   std::vector<bool> active;
   Vector<double> multiplier_values;
+  std::vector<double> reference_gaps; ///< empty: zero for every pair
 };
 } // namespace dyncontact

@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <vector>
 
 namespace dyncontact
 {
@@ -62,6 +63,19 @@ public:
                                 Vector<double>& /*old_acceleration*/,
                                 Vector<double>& /*predictor*/) const
   {
+  }
+
+  /**
+   * Before the step's solve, after adjust_predictor(): the gap each candidate pair's constraint
+   * holds at or above in this step (ContactConstraints::set_reference_gaps(); `predictor` is the
+   * adjusted one). Empty, the impenetrability condition g_{n+1} >= 0, by default; Persistency
+   * returns g_k(u_n) for the pairs that persist.
+   */
+  virtual std::vector<double> reference_gaps(const ContactConstraints<dim>& /*contact*/,
+                                             const StepStart& /*start*/,
+                                             const Vector<double>& /*predictor*/) const
+  {
+    return {};
   }
 
   /**
