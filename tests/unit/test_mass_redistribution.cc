@@ -86,4 +86,40 @@ TEST(MassRedistribution, StiffStrikerKeepsOneContactEpisodeWithTheExactForce)
             << "\n";
   EXPECT_LE(worst, 0.1);
 }
+
+// The default treatment's one known defect (doc/schemes.md, "The default"): at a release on coarse
+// time steps the massless contact node springs off while its neighbours' step still carries the old
+// contact force, a gain of (1/2) lambda_n g_{n+1}. The coarse spheres at dt = 0.02 (4 steps in
+// contact): with the energy guard off the run ends 4.9 % above its initial energy (bound: above
+// 1 %, so a fix of the defect shows here); with the guard (the default) the release steps are cut
+// until the gain is within its tolerance 1e-4 (measured 3.5e-5 after 2 cuts).
+TEST(MassRedistribution, CoarseSpheresGainAtReleaseIsCaughtByTheEnergyGuard)
+{
+  for (const bool guarded : {false, true})
+  {
+    const MeshRun run = run_mesh_case(
+        "prm/spheres_rho0.001.prm",
+        paper_coarse_spheres({"Contact/dynamics=mass-redistribution",
+                              "Time integration/time step=0.02",
+                              "Time integration/end time=2.16",
+                              guarded ? "Guards/energy=true" : "Guards/energy=false"}));
+    const auto energy   = run.history().column("total_energy");
+    const auto cuts     = run.history().column("step_cuts");
+    double largest_gain = 0.;
+    for (const double e : energy)
+      largest_gain = std::max(largest_gain, e / energy.front() - 1.);
+    const double total_cuts = std::accumulate(cuts.begin(), cuts.end(), 0.);
+    std::cout << "  coarse spheres, mass redistribution, energy guard " << guarded
+              << ": largest gain " << largest_gain << ", step cuts " << total_cuts << "\n";
+    if (guarded)
+    {
+      EXPECT_LE(largest_gain, 1e-4);
+      EXPECT_GT(total_cuts, 0.);
+    }
+    else
+    {
+      EXPECT_GT(largest_gain, 0.01);
+    }
+  }
+}
 } // namespace dyncontact::testing
