@@ -7,15 +7,17 @@
 #   the stiff striker (6.2 with bar 1 at E = 1e4, trapezoidal rule) and its mirror, the soft
 #   striker (bar 2 at E = 1e4); the Signorini bar (10 periods); the spheres (default prm, paper's
 #   dt), the coarse spheres at dt = 0.02 and the dissimilar spheres.
-# A run that fails is reported in its cells with its error line. About 5 minutes.
+# A run that fails is reported in its cells with its error line. About 10 minutes.
 #   bench/schemes.sh                       (every scheme)
-#   SCHEMES="persistency none" bench/schemes.sh   (a subset, into the same directory)
+#   SCHEMES="persistency none" RESULTS=/tmp/subset bench/schemes.sh   (a subset, elsewhere)
+#   SCHEMES="taylor-papadopoulos@generalized-alpha:0.8" bench/schemes.sh   (on a dissipative
+#     integrator: Time integration/integrator and spectral radius)
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
-results=bench/results/schemes
+results=${RESULTS:-bench/results/schemes}
 rm -rf "$results"
 mkdir -p "$results"
-read -r -a schemes <<<"${SCHEMES:-none taylor-papadopoulos mass-redistribution contact-stabilized persistency velocity-update}"
+read -r -a schemes <<<"${SCHEMES:-none taylor-papadopoulos mass-redistribution contact-stabilized persistency velocity-update taylor-papadopoulos@generalized-alpha:0.8 mass-redistribution@generalized-alpha:0.8}"
 trapezoidal=(--set "Time integration/beta=0.25")
 coarse_spheres=(--set "Mesh/file=../meshes/two_spheres.geo"
   --set "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3"
@@ -26,9 +28,16 @@ run() # problem scheme prm arguments...
   local problem=$1 scheme=$2 prm=$3
   shift 3
   local output="$results/$problem/$scheme"
+  # A scheme is a Contact/dynamics, optionally on a dissipative integrator: name@integrator:rho_inf.
+  local integrator=()
+  if [[ $scheme == *@* ]]; then
+    local member=${scheme#*@}
+    integrator=(--set "Time integration/integrator=${member%%:*}"
+      --set "Time integration/spectral radius=${member#*:}")
+  fi
   mkdir -p "$output"
   /usr/bin/time -f "%e" -o "$output/wall_time" build/dyncontact "$prm" --quiet --output "$output" \
-    --set "Output/vtu interval=0" --set "Contact/dynamics=$scheme" "$@" \
+    --set "Output/vtu interval=0" --set "Contact/dynamics=${scheme%%@*}" "$@" "${integrator[@]}" \
     >"$output/log" 2>&1 || echo "exit $?" >"$output/failed"
 }
 

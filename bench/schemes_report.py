@@ -19,12 +19,12 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 PROBLEMS = [
-    ("bar_rigid_wall", "6.1 bar on a rigid wall (beta = 0.001, Courant 1)"),
-    ("bars_identical", "6.2 identical bars (beta = 0.001, Courant 1)"),
-    ("bars_dissimilar", "6.3 dissimilar bars (beta = 0.001, Courant 1)"),
-    ("stiff_striker", "stiff striker: bar 1 E = 1e4 on bar 2 (trapezoidal, Courant 100 / 1)"),
-    ("soft_striker", "soft striker: bar 1 on bar 2 E = 1e4 (trapezoidal, Courant 1 / 100)"),
-    ("signorini_bar", "Signorini bar, 10 periods (trapezoidal, Courant 1)"),
+    ("bar_rigid_wall", "6.1 bar on a rigid wall (the paper's prm: Newmark, beta = 0.001, Courant 1)"),
+    ("bars_identical", "6.2 identical bars (the paper's prm: Newmark, beta = 0.001, Courant 1)"),
+    ("bars_dissimilar", "6.3 dissimilar bars (the paper's prm: Newmark, beta = 0.001, Courant 1)"),
+    ("stiff_striker", "stiff striker: bar 1 E = 1e4 on bar 2 (dt = 0.1, Courant 100 / 1; Newmark: beta = 1/4)"),
+    ("soft_striker", "soft striker: bar 1 on bar 2 E = 1e4 (dt = 0.1, Courant 1 / 100; Newmark: beta = 1/4)"),
+    ("signorini_bar", "Signorini bar, 10 periods (Courant 1; Newmark: beta = 1/4)"),
     ("spheres", "spheres, default mesh, the paper's dt = 0.0025"),
     ("spheres_dt0.02", "spheres, coarse mesh, dt = 0.02 (4 steps in contact)"),
     ("dissimilar_spheres", "dissimilar spheres, non-matching meshes"),

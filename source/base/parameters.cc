@@ -1,6 +1,7 @@
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/material/material.h>
 #include <dyncontact/models/gmsh_mesh.h>
+#include <dyncontact/time_integration/generalized_alpha.h>
 
 #include <deal.II/base/utilities.h>
 
@@ -257,9 +258,9 @@ void parse_file(ParameterHandler& prm, const std::string& filename, const bool s
     throw InputError("parameter file '" + filename + "': " + exception_text(exception));
   }
 }
-/// Contact/dynamics when not given: mass redistribution, the one treatment that keeps a single
-/// contact episode with the exact force at impedance ratio 100 (doc/schemes.md, "The default").
-const ContactDynamicsKind default_contact_dynamics = ContactDynamicsKind::mass_redistribution;
+/// Contact/dynamics when not given: the paper's modified Newmark, on the generalized-alpha
+/// integrator by default (doc/schemes.md, "The default").
+const ContactDynamicsKind default_contact_dynamics = ContactDynamicsKind::taylor_papadopoulos;
 } // namespace
 
 const NameTable<ContactFormulation>& contact_formulation_names()
@@ -449,6 +450,23 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
                     "Deprecated: use Contact/dynamics. classical = Contact/dynamics none, "
                     "modified = taylor-papadopoulos; given, it sets Contact/dynamics and the run "
                     "prints a warning. Empty: not given.");
+  prm.declare_entry(
+      "integrator",
+      "generalized-alpha",
+      Patterns::Selection(integrator_family_names().selection()),
+      "The time integrator, a member of the generalized-alpha family. newmark: Newmark with the "
+      "beta and gamma below (the paper's). hht (Hilber, Hughes & Taylor 1977), bossak (Wood, "
+      "Bossak & Zienkiewicz 1980) and generalized-alpha (Chung & Hulbert 1993): second order and "
+      "unconditionally stable, damping the highest frequencies by the spectral radius below; "
+      "they set beta and gamma themselves (leave those entries out). The default, "
+      "generalized-alpha with rho_inf = 0.8, keeps one contact episode where Newmark chatters "
+      "(doc/schemes.md); the paper's cases name newmark.");
+  prm.declare_entry("spectral radius",
+                    "0.8",
+                    Patterns::Double(0., 1.),
+                    "rho_inf [-] of hht (in [0.5, 1]), bossak and generalized-alpha (in [0, 1]): "
+                    "the amplification of the highest frequencies per step; 1 dissipates nothing, "
+                    "0 annihilates them in one step (generalized-alpha). Unused by newmark.");
   prm.declare_entry("beta",
                     "0.25",
                     Patterns::Double(0., 0.5),
@@ -488,7 +506,28 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
                      "u_{n+1} is explicit and the contact constraint cannot act on it. Use "
                      "0 < beta <= 0.5 (the paper's nearly explicit choice is 0.001).");
   time_step = get_positive(prm, "time step", "Time integration");
-  end_time  = get_positive(prm, "end time", "Time integration");
+  integrator =
+      integrator_family_names().parse(prm.get("integrator"), "Time integration/integrator");
+  spectral_radius = prm.get_double("spectral radius");
+  if (integrator != IntegratorFamily::newmark)
+  {
+    const std::string member = "Time integration/integrator = " + prm.get("integrator");
+    if (beta != 0.25 || gamma != 0.5)
+      throw InputError(member +
+                       " sets beta and gamma from the spectral radius; leave Time "
+                       "integration/beta and gamma at 0.25 and 0.5 (their defaults) or out "
+                       "(given beta = " +
+                       format_number(beta) + ", gamma = " + format_number(gamma) + ").");
+    const double lowest = integrator == IntegratorFamily::hht ? 0.5 : 0.;
+    if (spectral_radius < lowest)
+      throw InputError("Time integration/spectral radius = " + format_number(spectral_radius) +
+                       " is not allowed with " + member + ": it must be in [" +
+                       format_number(lowest) + ", 1].");
+    const GeneralizedAlpha member_coefficients(integrator, spectral_radius, time_step);
+    beta  = member_coefficients.beta();
+    gamma = member_coefficients.gamma();
+  }
+  end_time = get_positive(prm, "end time", "Time integration");
   if (end_time / time_step > 1e8)
     throw InputError("Time integration/end time = " + prm.get("end time") +
                      " with time step = " + prm.get("time step") +
@@ -615,8 +654,7 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
                     "multipliers. mass-redistribution: the nodes that can come into contact carry "
                     "no mass, each cell's mass going to its other nodes (Khenous, Laborde & "
                     "Renard 2008); the contact force is then the adjacent elements' elastic "
-                    "force, without the oscillation of massive contact nodes (the default: the "
-                    "only treatment without chatter at impedance ratio 100). contact-stabilized: "
+                    "force, without the oscillation of massive contact nodes. contact-stabilized: "
                     "the contact-stabilized Newmark of Deuflhard, Krause & Ertel (2008): the "
                     "predictor projected onto the admissible set, the old contact force left out "
                     "of the explicit part; energy dissipative at contact. persistency: the "
@@ -1094,10 +1132,12 @@ void ParameterReader::resolve_and_check()
       p.contact.dynamics == ContactDynamicsKind::contact_stabilized ||
       p.contact.dynamics == ContactDynamicsKind::persistency ||
       p.contact.dynamics == ContactDynamicsKind::velocity_update;
-  if (one_contact_force_per_step && (p.time.beta != 0.25 || p.time.gamma != 0.5))
-    throw InputError(dynamics + " needs the trapezoidal rule, Time integration/beta = 0.25 and " +
-                     "gamma = 0.5 (given beta = " + format_number(p.time.beta) +
-                     ", gamma = " + format_number(p.time.gamma) +
+  if (one_contact_force_per_step && (p.time.integrator != IntegratorFamily::newmark ||
+                                     p.time.beta != 0.25 || p.time.gamma != 0.5))
+    throw InputError(dynamics + " needs the trapezoidal rule, Time integration/integrator = " +
+                     "newmark with beta = 0.25 and gamma = 0.5 (given " +
+                     integrator_family_names().name(p.time.integrator) + ", beta = " +
+                     format_number(p.time.beta) + ", gamma = " + format_number(p.time.gamma) +
                      "): its one contact force per step and its energy argument are built on it; "
                      "with the paper's beta = 0.001 contact-stabilized's projected contact nodes "
                      "gained 3300 times the initial energy on 6.1.");

@@ -174,10 +174,10 @@ void Simulation<dim>::schedule_and_log()
       profile_steps.insert(static_cast<unsigned int>(std::lround(profile_time / dt)));
 
   log << "dyncontact: " << dof_handler.n_dofs() << " displacement DoFs, " << contact->n_pairs()
-      << " contact candidate(s), " << n_steps << " steps of dt = " << dt
-      << ", Newmark (beta = " << integrator.beta() << ", gamma = " << integrator.gamma()
-      << "), contact dynamics " << contact_dynamics_names().name(parameters.contact.dynamics)
-      << ", " << contact_formulation_names().name(parameters.contact.formulation) << " contact\n";
+      << " contact candidate(s), " << n_steps << " steps of dt = " << dt << ", "
+      << integrator.description() << ", contact dynamics "
+      << contact_dynamics_names().name(parameters.contact.dynamics) << ", "
+      << contact_formulation_names().name(parameters.contact.formulation) << " contact\n";
   if (std::abs(n_steps * dt - parameters.time.end_time) > 1e-9 * parameters.time.end_time)
     log << "  note: end time " << parameters.time.end_time
         << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
@@ -328,13 +328,16 @@ std::vector<double> Simulation<dim>::body_forces() const
 {
   // The nodes of the active pairs carry the contact force and fixed DoFs their support's reaction
   // (a clamped bar end); elsewhere M a + Q - W is only the Newton residual, whose sum over a body
-  // balance_body_momenta() has removed.
+  // balance_body_momenta() has removed. A dissipative member balances at t_{n+1-alpha_f}, not at
+  // t_{n+1}, so there every DoF's M a + Q - W counts (its sum over a body is sum M a - sum W, as
+  // sum Q = 0): the momentum guard then checks the treatments' velocity corrections only.
   const std::vector<bool> in_active_pair = active_pair_dofs();
+  const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
   std::vector<double> forces(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
     double force = external_force[i];
-    if (in_active_pair[i] || is_fixed_dof[i])
+    if (every_dof || in_active_pair[i] || is_fixed_dof[i])
       force += mass[i] * acceleration[i] + internal_force[i] - external_force[i];
     forces[dof_body[i]] += dof_direction[i] * force;
   }
@@ -383,9 +386,22 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   contact->set_reference_gaps(contact_dynamics->reference_gaps(*contact, start, predictor));
   Vector<double> last_configuration = old_displacement; // as an increment over the predictor
   last_configuration -= predictor;
-  external_force    = loads->force(time);
+  external_force = loads->force(time);
+  // A dissipative member balances at t_{n+1-alpha_f}: the solve takes W_eff (GeneralizedAlpha).
+  Vector<double> step_force = external_force;
+  if (integrator.family() != IntegratorFamily::newmark)
+  {
+    const Vector<double> load = loads->force(integrator.load_time(time));
+    Vector<double> old_inertia_force(mass);
+    old_inertia_force.scale(old_acceleration);
+    integrator.effective_force(load, old_inertia_force, before.internal_force, step_force);
+    step_old_acceleration = old_acceleration;
+    step_old_net_force    = before.internal_force;
+    step_old_net_force *= integrator.alpha_f();
+    step_old_net_force -= load;
+  }
   const auto report = solver->solve(
-      predictor, integrator.inertia_factor(), external_force, last_configuration, increment);
+      predictor, integrator.inertia_factor(), step_force, last_configuration, increment);
   internal_force = solver->internal_force();
   balance_body_momenta(increment);
   displacement = predictor;
@@ -482,12 +498,22 @@ typename Simulation<dim>::Measures Simulation<dim>::measure() const
       measures.kinetic_energy, measures.strain_energy, measures.acceleration_energy);
   if (step_history.n_rows() > 0)
   {
-    const Vector<double> net_force = net_internal_force();
-    const double force_factor      = contact_dynamics->contact_force_factor(integrator.rate_map());
+    // The balance the step solved: at t_{n+1} for Newmark, at the intermediate times of a
+    // dissipative member (M a_{n+1-alpha_m} + Q_{n+1-alpha_f} - W(t_{n+1-alpha_f})).
+    Vector<double> balance_acceleration = acceleration;
+    Vector<double> net_force            = net_internal_force();
+    if (step_old_acceleration.size() > 0)
+    {
+      balance_acceleration.sadd(
+          1. - integrator.alpha_m(), integrator.alpha_m(), step_old_acceleration);
+      net_force = internal_force;
+      net_force.sadd(1. - integrator.alpha_f(), 1., step_old_net_force);
+    }
+    const double force_factor = contact_dynamics->contact_force_factor(integrator.rate_map());
     measures.contact_force =
-        force_factor * contact->recovered_contact_force(mass, acceleration, net_force);
-    const auto side_forces =
-        contact->recovered_side_forces(mass, acceleration, net_force, model->impact_direction());
+        force_factor * contact->recovered_contact_force(mass, balance_acceleration, net_force);
+    const auto side_forces = contact->recovered_side_forces(
+        mass, balance_acceleration, net_force, model->impact_direction());
     measures.force_imbalance   = force_factor * (side_forces.on_a - side_forces.on_b);
     measures.velocity_jump     = contact->max_active_normal_jump(velocity);
     measures.acceleration_jump = contact->max_active_normal_jump(acceleration);
@@ -618,7 +644,7 @@ std::string Simulation<dim>::problem_fingerprint() const
   text << std::setprecision(17) << "dimension " << dim << ", " << dof_handler.n_dofs() << " DoFs, "
        << contact->n_pairs() << " contact candidates, " << model->n_bodies() << " bodies, dt "
        << parameters.time.time_step << ", maximum step cuts " << parameters.time.max_step_cuts
-       << ", beta " << integrator.beta() << ", gamma " << integrator.gamma() << ", "
+       << ", " << integrator.description() << ", "
        << contact_dynamics_names().name(parameters.contact.dynamics) << ", "
        << contact_formulation_names().name(parameters.contact.formulation);
   return text.str();

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <sstream>
 
 namespace dyncontact
 {
@@ -9,13 +10,15 @@ GeneralizedAlpha::GeneralizedAlpha(const TimeIntegrationParameters& parameters)
     : family_value(Family::newmark), alpha_m_value(0.), alpha_f_value(0.),
       beta_value(parameters.beta), gamma_value(parameters.gamma), dt(parameters.time_step)
 {
+  if (parameters.integrator != Family::newmark)
+    *this = GeneralizedAlpha(parameters.integrator, parameters.spectral_radius, dt);
   Assert(beta_value > 0., ExcMessage("beta > 0 is checked when the parameters are read."));
 }
 
 GeneralizedAlpha::GeneralizedAlpha(const Family family,
                                    const double spectral_radius,
                                    const double time_step)
-    : family_value(family), dt(time_step)
+    : family_value(family), rho_inf(spectral_radius), dt(time_step)
 {
   const double rho = spectral_radius;
   AssertThrow(time_step > 0., ExcMessage("The time step must be positive."));
@@ -120,5 +123,16 @@ double GeneralizedAlpha::stability_limit() const
 {
   return 2. * beta_value < gamma_value ? 1. / std::sqrt(gamma_value / 2. - beta_value)
                                        : std::numeric_limits<double>::infinity();
+}
+std::string GeneralizedAlpha::description() const
+{
+  std::ostringstream text;
+  if (family_value == Family::newmark)
+    text << "Newmark (beta = " << beta_value << ", gamma = " << gamma_value << ")";
+  else
+    text << integrator_family_names().name(family_value) << " (rho_inf = " << rho_inf
+         << ": alpha_m = " << alpha_m_value << ", alpha_f = " << alpha_f_value
+         << ", beta = " << beta_value << ", gamma = " << gamma_value << ")";
+  return text.str();
 }
 } // namespace dyncontact

@@ -5,6 +5,7 @@
 #include <dyncontact/contact/contact_discretization.h>
 #include <dyncontact/contact_dynamics/contact_dynamics_kind.h>
 #include <dyncontact/solver/direct_solver_package.h>
+#include <dyncontact/time_integration/integrator_family.h>
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/parsed_function.h>
@@ -36,6 +37,11 @@ struct TimeIntegrationParameters
   /// the deprecated Time integration/scheme (classical | modified), "" if not given; it sets
   /// Contact/dynamics (ParameterReader resolves it)
   std::string deprecated_scheme;
+  /// the member of the generalized-alpha family (Time integration/integrator)
+  IntegratorFamily integrator;
+  /// rho_inf of a dissipative member; 1 for newmark (unused)
+  double spectral_radius;
+  /// Newmark beta and gamma: as given for newmark, else the member's (set from rho_inf when read)
   double beta;
   double gamma;
   double time_step;

@@ -256,6 +256,12 @@ private:
   double time;
   Vector<double> displacement, velocity, acceleration;
   Vector<double> internal_force; ///< Q(u) at the current state
+  /**
+   * For a dissipative integrator, the old state's parts of the last step's balance at
+   * t_{n+1-alpha_f}: a_n as the step used it, and alpha_f Q(u_n) - W(t_{n+1-alpha_f}). Empty for
+   * Newmark, whose balance is at t_{n+1}.
+   */
+  Vector<double> step_old_acceleration, step_old_net_force;
   /** Per DoF: its body, and the impact-direction component of its unit vector. */
   std::vector<unsigned int> dof_body;
   std::vector<double> dof_direction;

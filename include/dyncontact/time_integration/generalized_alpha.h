@@ -2,9 +2,12 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/parameters.h>
+#include <dyncontact/time_integration/integrator_family.h>
 #include <dyncontact/time_integration/rate_map.h>
 
 #include <deal.II/lac/vector.h>
+
+#include <string>
 
 namespace dyncontact
 {
@@ -35,24 +38,22 @@ namespace dyncontact
  * One step, displacement-first: the predictor u~ (predict()), then Newton on
  *   c M (u_{n+1} - u~) + Q(u_{n+1}) - W_eff = 0,
  * the balance divided by (1 - alpha_f), with c = inertia_factor() and W_eff = effective_force(),
- * then the rates from the converged increment u_{n+1} - u~ (update_rates()). The run uses the
- * newmark member only (built from TimeIntegrationParameters); the others are tested on the one-DOF
- * oscillator (tests/unit/test_time_integration.cc) and are not yet selectable: wiring W_eff into
- * the finite-element residual changes what the contact multipliers mean. Assembly, solves and
- * contact are not here; a contact-dynamics treatment sees the integrator only through rate_map().
+ * then the rates from the converged increment u_{n+1} - u~ (update_rates()). Every member is
+ * selectable per run (Time integration/integrator, spectral radius). With contact the step
+ * equation gains -G^T lambda, so a multiplier is the contact force of the balance at
+ * t_{n+1-alpha_f} divided by (1 - alpha_f). Assembly, solves and contact are not here; a
+ * contact-dynamics treatment sees the integrator only through rate_map().
  */
 class GeneralizedAlpha
 {
 public:
-  enum class Family
-  {
-    newmark,
-    hht,
-    bossak,
-    generalized_alpha
-  };
+  using Family = IntegratorFamily;
 
-  /** The run's integrator: newmark with the parameters' beta > 0 (checked when read), gamma, dt. */
+  /**
+   * The run's integrator (Time integration/integrator): newmark with the parameters' beta > 0
+   * (checked when read) and gamma, or a dissipative member by the parameters' spectral radius;
+   * step size dt.
+   */
   explicit GeneralizedAlpha(const TimeIntegrationParameters& parameters);
 
   /**
@@ -63,6 +64,12 @@ public:
   GeneralizedAlpha(Family family, double spectral_radius, double time_step);
 
   Family family() const { return family_value; }
+
+  /**
+   * One line for logs: "Newmark (beta = 0.25, gamma = 0.5)" or, for a dissipative member, its
+   * name, rho_inf, alpha_m, alpha_f, beta and gamma.
+   */
+  std::string description() const;
   double alpha_m() const { return alpha_m_value; }
   double alpha_f() const { return alpha_f_value; }
   double beta() const { return beta_value; }
@@ -149,6 +156,7 @@ public:
 
 private:
   Family family_value;
+  double rho_inf = 1.; ///< the spectral radius of a dissipative member
   double alpha_m_value;
   double alpha_f_value;
   double beta_value;
