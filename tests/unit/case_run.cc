@@ -139,6 +139,29 @@ std::vector<unsigned int> contact_samples(const BarRun& run)
   return samples;
 }
 
+double max_window_mean_force_error(const BarRun& run, const unsigned int windows)
+{
+  const auto force = run.history().column("contact_force");
+  const auto times = run.history().column("time");
+  double worst     = 0.;
+  for (unsigned int window = 0; window < windows; ++window)
+  {
+    double computed = 0., exact = 0.;
+    unsigned int samples = 0;
+    for (unsigned int row = 0; row < times.size(); ++row)
+      if (times[row] > window && times[row] <= window + 1)
+      {
+        computed += force[row];
+        exact += run.exact_contact_force(times[row]);
+        ++samples;
+      }
+    EXPECT_GT(samples, 0u) << "no row in the window (" << window << ", " << window + 1 << "]";
+    if (samples > 0)
+      worst = std::max(worst, std::abs(computed - exact) / samples);
+  }
+  return worst;
+}
+
 double max_force_deviation(const History& history,
                            const double value,
                            const double start,

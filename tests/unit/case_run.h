@@ -77,6 +77,14 @@ std::vector<unsigned int> contact_samples(const BarRun& run);
 /** The number of contact episodes: rows with active pairs that follow a row without. */
 unsigned int contact_episodes(const History& history);
 
+/**
+ * The largest |mean of contact_force - mean of the exact force| over the windows (w, w + 1] of
+ * one time unit, w = 0, ..., windows - 1 (issue 14's measure of a force against its exact
+ * history: a chattering force can average right, a biased one cannot). Every window must hold a
+ * row (a test failure otherwise).
+ */
+double max_window_mean_force_error(const BarRun& run, unsigned int windows);
+
 /** max |contact_force - value| over the rows with start < t < end. */
 double max_force_deviation(const History& history, double value, double start, double end);
 } // namespace dyncontact::testing

@@ -1,7 +1,7 @@
 // Acceptance tests of Contact/dynamics = contact-stabilized (Deuflhard, Krause & Ertel 2008) on
-// problems with exact references: the paper's bars of 6.1 (exact force Z v / 2 = 0.5 on [0, 20))
-// and the coarse spheres at a time step 8 times the paper's, where the other schemes gain energy at
-// release.
+// problems with exact references: the paper's identical bars of 6.2 (exact force Z v / 2 = 0.5 on
+// [0, 20)) and the coarse spheres at a time step 8 times the paper's, where the other schemes gain
+// energy at release.
 #include <cmath>
 #include <gtest/gtest.h>
 
@@ -34,7 +34,7 @@ TEST(ContactStabilized, CoarseTimeStepsNeverGainEnergyAndNeedNoStepCut)
   EXPECT_EQ(run.history().value(run.history().n_rows() - 1, "active_constraints"), 0.);
 }
 
-// No contact-force oscillation on 6.1 with the trapezoidal rule, where classical Newmark opens and
+// No contact-force oscillation on 6.2 with the trapezoidal rule, where classical Newmark opens and
 // closes the contact 123 times with forces up to 3.9: one contact episode, and after the first
 // time unit the force (gamma lambda, ContactStabilizedNewmark::contact_force_factor()) within 0.01
 // of the exact 0.5 (measured 8.2e-3: the scheme's dissipation at the two contact nodes).
@@ -44,7 +44,7 @@ TEST(ContactStabilized, IdenticalBarsContactForceDoesNotOscillate)
       run_bar_case("prm/bars_identical.prm",
                    {"Contact/dynamics=contact-stabilized", "Time integration/beta=0.25"});
   const double deviation = max_force_deviation(run.history(), 0.5, 1., 19.);
-  std::cout << "  6.1, contact-stabilized: max |F - 0.5| on (1, 19) = " << deviation << "\n";
+  std::cout << "  6.2, contact-stabilized: max |F - 0.5| on (1, 19) = " << deviation << "\n";
   EXPECT_EQ(contact_episodes(run.history()), 1u);
   EXPECT_LE(deviation, 0.01);
 }
