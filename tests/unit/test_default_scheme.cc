@@ -60,7 +60,7 @@ TEST(DefaultScheme, IsThePapersSchemeOnGeneralizedAlpha)
 // 0.089, in the last window, where the discrete release comes early as with every scheme here).
 TEST(DefaultScheme, StiffStrikerKeepsOneContactEpisodeWithTheExactForce)
 {
-  const BarRun run = run_bar_case("prm/bars_identical.prm",
+  const BarRun run   = run_bar_case("prm/bars_identical.prm",
                                   with_default_scheme({"Geometry/Bar 1/Young's modulus=1e4"}));
   const double worst = max_window_mean_force_error(run, 20);
   std::cout << "  stiff striker, default scheme: " << contact_episodes(run.history())
@@ -76,10 +76,10 @@ TEST(DefaultScheme, StiffStrikerKeepsOneContactEpisodeWithTheExactForce)
 // 4 steps per contact).
 TEST(DefaultScheme, CoarseSpheresNeverGainEnergyAndNeedNoStepCut)
 {
-  const MeshRun run = run_mesh_case(
-      "prm/spheres_rho0.001.prm",
-      paper_coarse_spheres(with_default_scheme(
-          {"Time integration/time step=0.02", "Time integration/end time=2.16"})));
+  const MeshRun run =
+      run_mesh_case("prm/spheres_rho0.001.prm",
+                    paper_coarse_spheres(with_default_scheme(
+                        {"Time integration/time step=0.02", "Time integration/end time=2.16"})));
   const auto energy   = run.history().column("total_energy");
   const auto cuts     = run.history().column("step_cuts");
   double largest_gain = -1.;
