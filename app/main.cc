@@ -3,6 +3,7 @@
 #include <dyncontact/base/command_line.h>
 #include <dyncontact/base/output_directory.h>
 #include <dyncontact/base/parameters.h>
+#include <dyncontact/base/version.h>
 #include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/bar_model.h>
 #include <dyncontact/simulation/interruption.h>
@@ -138,6 +139,9 @@ int main(int argc, char** argv)
     {
     case CommandLine::Action::help:
       std::cout << CommandLine::usage();
+      return 0;
+    case CommandLine::Action::version:
+      std::cout << "dyncontact " << version() << " (commit " << commit() << ")\n";
       return 0;
     case CommandLine::Action::print_parameters:
       ParameterReader::print_documentation(std::cout);

@@ -29,11 +29,10 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
       set_action(Action::help);
     else if (argument == "--print-parameters")
       set_action(Action::print_parameters);
-    else if (argument == "--validate")
-    {
+    else if (argument == "--version")
+      set_action(Action::version);
+    else if (argument == "--validate") // the parameter file may come before or after it
       set_action(Action::validate);
-      command_line.parameter_file = value_of(i);
-    }
     else if (argument == "--set")
       command_line.overrides.push_back(value_of(i));
     else if (argument == "--output")
@@ -49,11 +48,7 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
     else if (!argument.empty() && argument[0] == '-')
       throw InputError("unknown option '" + argument + "'; see --help.");
     else if (command_line.parameter_file.empty())
-    {
-      if (!action_given)
-        set_action(Action::run);
       command_line.parameter_file = argument;
-    }
     else
       throw InputError("more than one parameter file given ('" + command_line.parameter_file +
                        "' and '" + argument + "').");
@@ -64,8 +59,15 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
                     [](const std::string& o) { return o.rfind("Output/directory=", 0) == 0; }) > 1)
     throw InputError("--resume DIR continues in DIR; do not give --output or Output/directory "
                      "with it.");
+  if (!action_given && !command_line.parameter_file.empty())
+    set_action(Action::run);
   if (!action_given && !command_line.overrides.empty())
     throw InputError("no parameter file given; see --help.");
+  if ((command_line.action == Action::help || command_line.action == Action::version ||
+       command_line.action == Action::print_parameters) &&
+      !command_line.parameter_file.empty())
+    throw InputError("conflicting options: a parameter file ('" + command_line.parameter_file +
+                     "') is given with --help, --version or --print-parameters; see --help.");
   if ((command_line.action == Action::run || command_line.action == Action::validate) &&
       command_line.parameter_file.empty())
     throw InputError("no parameter file given; see --help.");
@@ -84,11 +86,13 @@ std::string CommandLine::usage()
          "      --quiet leaves out the progress lines (warnings and the summary stay).\n"
          "  dyncontact FILE.prm --resume DIR [--set ...]\n"
          "      continue the interrupted run of FILE.prm from DIR/checkpoint.bin, in DIR.\n"
-         "  dyncontact --validate FILE.prm [--set ...]\n"
+         "  dyncontact --validate FILE.prm [--set ...]   (or FILE.prm --validate)\n"
          "      check the parameters and the mesh as a run does before its first step, run\n"
          "      nothing, write nothing.\n"
          "  dyncontact --print-parameters\n"
          "      print every entry with its documentation, default and allowed values.\n"
+         "  dyncontact --version\n"
+         "      print the version and the git commit of the build.\n"
          "  dyncontact --help\n"
          "\n"
          "A run writes into Output/directory: history.csv (one row per step), the reference\n"

@@ -9,8 +9,8 @@ namespace dyncontact
 {
 /**
  * The executable's command line: `dyncontact FILE.prm [--set "Section/entry=value"]...
- * [--output DIR]`, `--validate FILE.prm`, `--print-parameters`, `--help`. Parsing only; running is
- * main's job.
+ * [--output DIR]`, `--validate` with a FILE.prm anywhere, `--print-parameters`, `--version`,
+ * `--help`; options in any order. Parsing only; running is main's job.
  */
 struct CommandLine
 {
@@ -19,6 +19,7 @@ struct CommandLine
     run,
     validate,
     print_parameters,
+    version,
     help
   };
 
