@@ -17,7 +17,7 @@ hertz.csv, get in addition:
   - contact_pressure.png (if contact_pressure_t<T>.csv exist): FE pressure of every contact pair
     (filled markers active, hollow inactive) at each profile time T with contact, against Hertz's
     p(r) = p0 sqrt(1 - r^2/a^2), a = sqrt(R* d), p0 = 3 F / (2 pi a^2). F(T) and the approach d(T)
-    are interpolated in hertz.csv and R* is read from its '#' comment line. FE pressures beyond
+    are interpolated in hertz.csv and R* is read from hertz_parameters.csv. FE pressures beyond
     the plotted range (e.g. on the axis from a code that divides the nodal force by the 2 pi r
     weighted tributary area, which vanishes there) are drawn at the edge and listed in the panel;
   - deformed_mesh_t<T>.png for every profile_t<T>.csv (if cells.csv exists; paper Fig. 13): the
@@ -193,19 +193,16 @@ def sphere_case(run_dirs):
 
 
 def hertz_radius(run_dir):
-    """R*, the effective radius, from the '#' comment line of hertz.csv."""
-    path = os.path.join(run_dir, 'hertz.csv')
-    number = r'([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)'
+    """R*, the effective radius, from hertz_parameters.csv (quantity,value rows)."""
+    path = os.path.join(run_dir, 'hertz_parameters.csv')
     try:
-        with open(path) as f:
-            for line in f:
-                if line.lstrip().startswith('#'):
-                    match = re.search(r'R\*\s*=\s*' + number, line)
-                    if match:
-                        return float(match.group(1))
-    except (OSError, UnicodeDecodeError) as e:
+        with open(path, newline='') as f:
+            for row in csv.DictReader(f):
+                if row.get('quantity') == 'effective_radius':
+                    return float(row['value'])
+    except (OSError, UnicodeDecodeError, ValueError, TypeError) as e:
         raise InputError(f'cannot read {path}: {e}') from None
-    raise InputError(f'{path}: no comment line gives the effective radius "R* = ..."')
+    raise InputError(f'{path}: no row gives the effective radius (quantity effective_radius)')
 
 
 def contact_interval(time, force):
@@ -394,7 +391,7 @@ def by_time(times):
 def pressure_profiles(run_dir, run, tmax):
     """(T, FE table, Hertz (a, p0) or None) for every contact_pressure_t<T>.csv of the run that
     has an active pair or a nonzero pressure. Hertz's F and approach d are interpolated in
-    hertz.csv at T; R* comes from its comment line."""
+    hertz.csv at T; R* comes from hertz_parameters.csv."""
     files = profile_files(run_dir, 'contact_pressure_t', tmax)
     hertz = run['hertz']
     radius = None

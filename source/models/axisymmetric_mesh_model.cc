@@ -358,13 +358,17 @@ void AxisymmetricMeshModel::write_reference(const std::string& directory,
   const auto hertz = hertz_reference();
   if (!hertz)
     return;
+  // Plain CSV files (a header row, then numbers); the constants that produced them beside them in
+  // *_parameters.csv, one "quantity,value" row each.
+  std::ofstream parameters(directory + "/hertz_parameters.csv");
+  parameters << "quantity,value\n" << std::setprecision(15) << "effective_radius,"
+             << hertz->effective_radius() << "\neffective_modulus," << hertz->effective_modulus()
+             << "\neffective_mass," << hertz->effective_mass() << "\nrelative_approach_speed,"
+             << hertz->relative_approach_speed() << "\nfirst_touch_time,"
+             << hertz->first_touch_time() << "\npeak_force," << hertz->maximum_force()
+             << "\nduration," << hertz->contact_duration() << "\nimpulse," << hertz->impulse()
+             << "\n";
   std::ofstream file(directory + "/hertz.csv");
-  file << "# Hertz's quasi-static impact: R* = " << hertz->effective_radius()
-       << ", E* = " << hertz->effective_modulus() << ", m* = " << hertz->effective_mass()
-       << ", v = " << hertz->relative_approach_speed()
-       << ", first touch t0 = " << hertz->first_touch_time() << "; peak force "
-       << hertz->maximum_force() << ", duration " << hertz->contact_duration() << ", impulse "
-       << hertz->impulse() << "\n";
   file << "time,contact_force,approach\n" << std::setprecision(15);
   for (const double time : times)
     file << time << "," << hertz->contact_force(time) << "," << hertz->approach(time) << "\n";
@@ -373,13 +377,14 @@ void AxisymmetricMeshModel::write_reference(const std::string& directory,
   if (!law)
     return;
   // Against the rigid plane the law is that of the mirrored pair, whose approach is twice the
-  // sphere's.
+  // sphere's; the approach column is that of hertz.csv.
   const double approach_scale = head_on_impact()->other.sphere ? 1. : 0.5;
+  std::ofstream law_parameters(directory + "/finite_sphere_parameters.csv");
+  law_parameters << "quantity,value\n"
+                 << std::setprecision(15) << "c0," << FiniteSphereImpact::c0_for_nu_0_3
+                 << "\npeak_force," << law->maximum_force() << "\nduration,"
+                 << law->contact_duration() << "\nimpulse," << law->impulse() << "\n";
   std::ofstream law_file(directory + "/finite_sphere.csv");
-  law_file << "# Finite-sphere law (doc/method.md section 5, C0 = "
-           << FiniteSphereImpact::c0_for_nu_0_3 << "): peak force " << law->maximum_force()
-           << ", duration " << law->contact_duration() << ", impulse " << law->impulse()
-           << "; approach of the centres as in hertz.csv\n";
   law_file << "time,contact_force,approach\n" << std::setprecision(15);
   for (const double time : times)
     law_file << time << "," << law->contact_force(time) << ","
