@@ -13,6 +13,7 @@
 #include <limits>
 #include <numeric>
 #include <optional>
+#include <regex>
 #include <set>
 #include <sstream>
 
@@ -32,6 +33,82 @@ std::string exception_text(const ExceptionBase& exception)
   std::string word, message;
   while (words >> word)
     message += (message.empty() ? "" : " ") + word;
+  return message;
+}
+
+/**
+ * A deal.II pattern description in words: "[Double 0.5...1 (inclusive)]" -> "in [0.5, 1]",
+ * "[Double 0...MAX_DOUBLE (inclusive)]" -> ">= 0", "[Integer range 2...1000 (inclusive)]" ->
+ * "an integer in [2, 1000]", "[Selection a|b ]" -> "one of 'a', 'b'", "[Bool]" -> "true or
+ * false"; any other pattern is returned as given.
+ */
+std::string readable_pattern(const std::string& pattern)
+{
+  static const std::regex range(R"(\[(Double|Integer range) (\S+)\.\.\.(\S+) \(inclusive\)\])");
+  static const std::regex selection(R"(\[Selection (.*?) ?\])");
+  std::smatch match;
+  if (std::regex_match(pattern, match, range))
+  {
+    const std::string kind = match[1] == "Double" ? "a number" : "an integer";
+    const auto unbounded   = [](const std::string& bound)
+    {
+      return bound.find("MAX_") != std::string::npos || bound == "2147483647" ||
+             bound == "-2147483648";
+    };
+    const std::string low = match[2], high = match[3];
+    if (unbounded(low) && unbounded(high))
+      return kind;
+    if (unbounded(high))
+      return kind + " >= " + low;
+    if (unbounded(low))
+      return kind + " <= " + high;
+    return kind + " in [" + low + ", " + high + "]";
+  }
+  if (std::regex_match(pattern, match, selection))
+  {
+    std::string names, rest = match[1];
+    for (std::size_t bar; (bar = rest.find('|')) != std::string::npos; rest = rest.substr(bar + 1))
+      names += "'" + rest.substr(0, bar) + "', ";
+    return "one of " + names + "'" + rest + "'";
+  }
+  if (pattern == "[Bool]")
+    return "true or false";
+  return pattern;
+}
+
+/**
+ * deal.II's message on an entry in words: a value that does not match the entry's pattern, from
+ * --set ("The string <V> does not match the given pattern <P>.", for `entry_path`) or from a file
+ * ("Line <N> of file <F>: The entry value V for the entry named E does not match the given
+ * pattern: P"), or an entry that is not declared (--set: "You can't ask for entry <E> ...", file:
+ * "Line <N> of file <F>: No entry with name <E> was declared ..."). Any other message is returned
+ * as given.
+ */
+std::string readable_entry_error(const std::string& message, const std::string& entry_path = "")
+{
+  static const std::regex value_from_set(
+      R"(The string <(.*)> does not match the given pattern <(.*)>\.?)");
+  static const std::regex value_from_file(
+      R"(Line <(\d+)> of file <.*>: The entry value (.*) for the entry named (.*) does not match the given pattern: (.*))");
+  static const std::regex unknown_from_set(
+      R"(You can't ask for entry <(.*)> you have not yet declared\.?)");
+  static const std::regex unknown_from_file(
+      R"(Line <(\d+)> of file <.*>: No entry with name <(.*)> was declared in the current subsection\.?)");
+  const std::string where = entry_path.empty() ? std::string("the value") : entry_path;
+  std::smatch match;
+  if (std::regex_match(message, match, value_from_set))
+    return where + " = " + std::string(match[1]) + " is not allowed: it must be " +
+           readable_pattern(match[2]) + ".";
+  if (std::regex_match(message, match, value_from_file))
+    return "line " + std::string(match[1]) + ": " + std::string(match[3]) + " = " +
+           std::string(match[2]) + " is not allowed: it must be " + readable_pattern(match[4]) +
+           ".";
+  if (std::regex_match(message, match, unknown_from_set))
+    return "no entry '" + std::string(match[1]) +
+           "' is declared in that subsection (dyncontact --print-parameters lists them).";
+  if (std::regex_match(message, match, unknown_from_file))
+    return "line " + std::string(match[1]) + ": no entry '" + std::string(match[2]) +
+           "' is declared in this subsection (dyncontact --print-parameters lists them).";
   return message;
 }
 
@@ -101,7 +178,11 @@ void apply_override(ParameterHandler& prm, const std::string& text, const bool i
       prm.leave_subsection();
     if (ignore_unknown)
       return;
-    throw InputError("--set '" + text + "': " + exception_text(exception));
+    std::string path;
+    for (const auto& subsection : override_entry.subsections)
+      path += subsection + "/";
+    throw InputError("--set '" + text + "': " +
+                     readable_entry_error(exception_text(exception), path + override_entry.entry));
   }
   for (unsigned int i = 0; i < override_entry.subsections.size(); ++i)
     prm.leave_subsection();
@@ -255,7 +336,8 @@ void parse_file(ParameterHandler& prm, const std::string& filename, const bool s
   }
   catch (const ExceptionBase& exception)
   {
-    throw InputError("parameter file '" + filename + "': " + exception_text(exception));
+    throw InputError("parameter file '" + filename +
+                     "': " + readable_entry_error(exception_text(exception)));
   }
 }
 /// Contact/dynamics when not given: the paper's modified Newmark, on the generalized-alpha
@@ -376,10 +458,10 @@ void BodyParameters::declare_parameters(ParameterHandler& prm)
                     Patterns::Selection(material_names()),
                     "Hyperelastic law: linear elastic (small strain), st venant-kirchhoff, or "
                     "neo-hookean (compressible, W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2).");
-  prm.declare_entry("Young's modulus", "1", Patterns::Double(0.), "E [force/length^2], > 0.", true);
+  prm.declare_entry("Young's modulus", "1", Patterns::Double(), "E [force/length^2], > 0.", true);
   prm.declare_entry(
       "Poisson's ratio", "0.3", Patterns::Double(-1., 0.5), "nu [-], -1 < nu < 0.5.", true);
-  prm.declare_entry("density", "1", Patterns::Double(0.), "rho [mass/length^3], > 0.", true);
+  prm.declare_entry("density", "1", Patterns::Double(), "rho [mass/length^3], > 0.", true);
   prm.declare_entry("monitor point",
                     "0, 0",
                     Patterns::List(Patterns::Double(), 2, 2),
@@ -469,7 +551,7 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
                     "0 annihilates them in one step (generalized-alpha). Unused by newmark.");
   prm.declare_entry("beta",
                     "0.25",
-                    Patterns::Double(0., 0.5),
+                    Patterns::Double(),
                     "Newmark beta [-], 0 < beta <= 0.5. Unconditionally stable when "
                     "2 beta >= gamma; beta = 0.25 is the trapezoidal rule. beta = 0 (explicit "
                     "central difference) is rejected: u_{n+1} would not depend on the contact "
@@ -481,9 +563,9 @@ void TimeIntegrationParameters::declare_parameters(ParameterHandler& prm)
                     "gamma > 0.5 adds numerical dissipation.");
   prm.declare_entry("time step",
                     "0.1",
-                    Patterns::Double(0.),
+                    Patterns::Double(),
                     "Time step dt [time], > 0. The Courant number c dt / h is printed at start.");
-  prm.declare_entry("end time", "30", Patterns::Double(0.), "End of the run [time], > 0.");
+  prm.declare_entry("end time", "30", Patterns::Double(), "End of the run [time], > 0.");
   prm.declare_entry("maximum step cuts",
                     "10",
                     Patterns::Integer(),
@@ -501,10 +583,13 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
   deprecated_scheme = prm.get("scheme"); // resolved, or rejected, by resolve_and_check()
   beta              = prm.get_double("beta");
   gamma             = prm.get_double("gamma");
-  if (!(beta > 0.))
+  if (beta == 0.)
     throw InputError("Time integration/beta = 0 is not supported: with beta = 0 the displacement "
                      "u_{n+1} is explicit and the contact constraint cannot act on it. Use "
                      "0 < beta <= 0.5 (the paper's nearly explicit choice is 0.001).");
+  if (!(beta > 0. && beta <= 0.5))
+    throw InputError("Time integration/beta = " + prm.get("beta") +
+                     " is not allowed: it must be in (0, 0.5].");
   time_step = get_positive(prm, "time step", "Time integration");
   integrator =
       integrator_family_names().parse(prm.get("integrator"), "Time integration/integrator");
@@ -841,15 +926,15 @@ void BarParameters::declare_parameters(ParameterHandler& prm)
   // Every entry of a bar must be given: a bar the user forgot must not appear with defaults.
   prm.declare_entry(
       "left end", "0", Patterns::Double(), "x of the bar's left end at t = 0 [length].", true);
-  prm.declare_entry("length", "10", Patterns::Double(0.), "Bar length L [length], > 0.", true);
+  prm.declare_entry("length", "10", Patterns::Double(), "Bar length L [length], > 0.", true);
   prm.declare_entry("number of elements",
                     "100",
                     Patterns::Integer(1, 10000000),
                     "Number of equal 2-node linear elements along the bar [-], >= 1.",
                     true);
-  prm.declare_entry("Young's modulus", "1", Patterns::Double(0.), "E [force/length^2], > 0.", true);
-  prm.declare_entry("density", "1", Patterns::Double(0.), "rho [mass/length^3], > 0.", true);
-  prm.declare_entry("cross-section area", "1", Patterns::Double(0.), "A [length^2], > 0.", true);
+  prm.declare_entry("Young's modulus", "1", Patterns::Double(), "E [force/length^2], > 0.", true);
+  prm.declare_entry("density", "1", Patterns::Double(), "rho [mass/length^3], > 0.", true);
+  prm.declare_entry("cross-section area", "1", Patterns::Double(), "A [length^2], > 0.", true);
   prm.declare_entry("initial velocity",
                     "0",
                     Patterns::Double(),
