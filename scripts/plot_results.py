@@ -1,19 +1,20 @@
 #!/usr/bin/python3
 """Plot dyncontact run histories against the exact (and Hertz) reference solutions.
 
-Usage: plot_results.py RUN_DIR [RUN_DIR ...] [--output DIR] [--labels L1 L2 ...] [--tmax T]
+Usage: plot_results.py RUN_DIR [RUN_DIR ...] [--output DIR] [--labels L1 L2 ...] [--tmin T] [--tmax T]
                        [--magnify M]
 
 Each RUN_DIR holds history.csv and optionally exact.csv, hertz.csv and parameters.prm. Profiles
 (profile_t<T>.csv, contact_pressure_t<T>.csv) are taken only at the run's own profile times, read
 from its parameters.prm, so that files another run left in the directory are not drawn.
 Writes tip_velocity.png, tip_acceleration.png, tip_displacement.png, contact_force.png
-and energy.png, each with one panel per run side by side, and prints their paths.
+and energy.png, each with one panel per run side by side, and prints their paths. Each panel is
+zoomed on the run's contact interval (the reference's, or the FE's if longer, plus 30 % on each
+side); --tmin and --tmax choose the window instead.
 
 Runs of the two-sphere impact (Taylor & Papadopoulos 1993, section 6.4), recognised by their
 hertz.csv, get in addition:
-  - contact_force.png zoomed on the contact interval (Hertz's, or the FE's if longer, plus 30 %
-    on each side), FE against Hertz (paper Figs. 11 and 12);
+  - contact_force.png with the FE against Hertz (paper Figs. 11 and 12);
   - contact_pressure.png (if contact_pressure_t<T>.csv exist): FE pressure of every contact pair
     (filled markers active, hollow inactive) at each profile time T with contact, against Hertz's
     p(r) = p0 sqrt(1 - r^2/a^2), a = sqrt(R* d), p0 = 3 F / (2 pi a^2). F(T) and the approach d(T)
@@ -216,21 +217,25 @@ def contact_interval(time, force):
 
 
 def contact_window(run):
-    """Time window of the zoomed contact force plot of a sphere run: the contact interval of
-    Hertz, or of the FE if it reaches further, plus CONTACT_MARGIN of its length on each side;
-    None for runs without hertz.csv or without contact."""
-    hertz, history = run['hertz'], run['history']
-    if not hertz:
-        return None
-    intervals = [contact_interval(hertz['time'], hertz['contact_force'])]
-    if 'contact_force' in history:
-        intervals.append(contact_interval(history['time'], history['contact_force']))
+    """Time window of the time-history plots: the contact interval of the reference (Hertz or the
+    exact solution), or of the FE if it reaches further, plus CONTACT_MARGIN of its length on each
+    side; None for runs without contact."""
+    intervals = []
+    for key in ('hertz', 'exact', 'history'):
+        table = run[key]
+        if 'contact_force' in table:
+            intervals.append(contact_interval(table['time'], table['contact_force']))
     intervals = [i for i in intervals if i is not None]
     if not intervals:
         return None
     start, end = min(i[0] for i in intervals), max(i[1] for i in intervals)
     margin = CONTACT_MARGIN * (end - start)
     return start - margin, end + margin
+
+
+def zoom(run, window):
+    """The run with its tables clipped to `window` (unchanged if window is None)."""
+    return {key: clip(table, window) for key, table in run.items()}
 
 
 def fe_curve(table, column, label, colour):
@@ -263,10 +268,8 @@ def tip_curves(run, prefix, steps):
 
 
 def force_curves(run):
-    """FE contact force with the exact and Hertz references where available; runs with a Hertz
-    reference are zoomed on their contact window (markers then fall on every step)."""
-    window = contact_window(run)
-    history, exact, hertz = (clip(run[key], window) for key in ('history', 'exact', 'hertz'))
+    """FE contact force with the exact and Hertz references where available."""
+    history, exact, hertz = run['history'], run['exact'], run['hertz']
     curves = []
     if 'contact_force' in history:
         curves.append(fe_curve(history, 'contact_force', 'FE', FE_COLOURS[0]))
@@ -607,6 +610,9 @@ def parse_args(argv):
     parser.add_argument('--output', metavar='DIR',
                         help='where to write the PNGs (default: the first RUN_DIR)')
     parser.add_argument('--labels', nargs='+', metavar='L', help='panel titles, one per RUN_DIR')
+    parser.add_argument('--tmin', type=float, metavar='T',
+                        help='start the time axis at T (default: the time-history plots are '
+                             'zoomed on the contact)')
     parser.add_argument('--tmax', type=float, metavar='T', help='clip the time axis at T')
     parser.add_argument('--magnify', type=float, default=1.0, metavar='M',
                         help='deformed meshes: scale each body\'s displacement about its rigid '
@@ -640,6 +646,12 @@ def main(argv=None):
     try:
         runs = [load_run(d, args.tmax) for d in args.run_dirs]
         spheres = [bool(run['hertz']) for run in runs]
+        # Every time-history plot shows the contact unless --tmin or --tmax chooses the window.
+        if args.tmin is None and args.tmax is None:
+            windows = [contact_window(run) for run in runs]
+        else:
+            windows = [(-np.inf if args.tmin is None else args.tmin, np.inf)] * len(runs)
+        zoomed = [zoom(run, window) for run, window in zip(runs, windows)]
         case = sphere_case(args.run_dirs)
         os.makedirs(output, exist_ok=True)
         for name, title, ylabel, make_curves in figures:
@@ -650,7 +662,7 @@ def main(argv=None):
                          '(Taylor & Papadopoulos 1993, section 6.4)')
                 ylabel = 'total contact force F'
                 panel_labels = [m if s else label for m, s, label in zip(mesh_labels, spheres, labels)]
-            if plot_figure(path, title, ylabel, [make_curves(run) for run in runs], panel_labels):
+            if plot_figure(path, title, ylabel, [make_curves(run) for run in zoomed], panel_labels):
                 print(path)
         path = os.path.join(output, 'contact_pressure.png')
         if plot_pressure(path, f'Contact pressure: {case}' + (', FE vs Hertz' if any(spheres) else ''),
