@@ -24,8 +24,9 @@ hertz.csv, get in addition:
   - deformed_mesh_t<T>.png for every profile_t<T>.csv (if cells.csv exists; paper Fig. 13): the
     deformed cells X + u of all bodies, mirrored about the axis, full section and (two or more
     bodies) the contact region |r| <= 3, |z - z_contact| <= 2. --magnify M scales each body's
-    displacement relative to its rigid axial translation (Pappus-weighted mean over its cells), so
-    the bodies do not drift apart; the default M = 1 draws the true displacements.
+    displacement about that of its node nearest to the other bodies, so that bodies in contact
+    stay touching (one body: about its rigid axial translation); the default M = 1 draws the true
+    displacements.
 """
 import argparse
 import csv
@@ -515,23 +516,47 @@ def read_mesh(run_dir, profile_path):
     return cells['body'], index, profile
 
 
+def nearest_node(nodes, positions, others):
+    """The node of `nodes` whose position is nearest to any of the points `others` (k x 2)."""
+    best, best_distance = nodes[0], np.inf
+    for start in range(0, len(nodes), 1000):  # chunks keep the distance matrix small
+        chunk = nodes[start:start + 1000]
+        distance = np.min(np.linalg.norm(positions[chunk][:, None, :] - others[None, :, :], axis=2),
+                          axis=1)
+        i = int(np.argmin(distance))
+        if distance[i] < best_distance:
+            best, best_distance = chunk[i], distance[i]
+    return best
+
+
 def deformed_outlines(bodies, index, profile, magnify):
     """Current cell outlines X + u (cells x 9 x 2, closed). For magnify != 1 each body's
-    displacement is scaled about its rigid axial translation t: X + t + magnify (u - t), where t is
-    the mean axial displacement of its cells weighted by their volume (area times centroid r,
-    Pappus; the plain mean if that weight vanishes)."""
+    displacement is scaled about a reference displacement t: X + t + magnify (u - t). With other
+    bodies, t is the displacement of the body's node nearest to them, so that bodies in contact
+    stay touching there; a single body uses its rigid axial translation, the mean axial
+    displacement of its cells weighted by their volume (area times centroid r, Pappus; the plain
+    mean if that weight vanishes)."""
     X = np.column_stack([profile['x'], profile['y']])
     u = np.column_stack([profile['u_x'], profile['u_y']])
     if magnify != 1:
-        for body in np.unique(bodies):
-            cells = index[bodies == body]
-            x, y = X[cells, 0], X[cells, 1]
-            cross = x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y
-            moment = ((x + np.roll(x, -1, axis=1)) * cross).sum(axis=1) / 6  # area * centroid r
-            weight = np.abs(moment) if np.abs(moment).sum() > 0 else np.ones(len(cells))
-            shift = np.array([0, np.sum(weight * u[cells, 1].mean(axis=1)) / weight.sum()])
-            nodes = np.unique(cells)
-            u[nodes] = shift + magnify * (u[nodes] - shift)
+        current = X + u
+        body_ids = np.unique(bodies)
+        node_sets = {body: np.unique(index[bodies == body]) for body in body_ids}
+        scaled = u.copy()
+        for body in body_ids:
+            nodes = node_sets[body]
+            if len(body_ids) > 1:
+                others = np.concatenate([current[node_sets[b]] for b in body_ids if b != body])
+                shift = u[nearest_node(nodes, current, others)]
+            else:
+                cells = index[bodies == body]
+                x, y = X[cells, 0], X[cells, 1]
+                cross = x * np.roll(y, -1, axis=1) - np.roll(x, -1, axis=1) * y
+                moment = ((x + np.roll(x, -1, axis=1)) * cross).sum(axis=1) / 6  # area * centroid r
+                weight = np.abs(moment) if np.abs(moment).sum() > 0 else np.ones(len(cells))
+                shift = np.array([0, np.sum(weight * u[cells, 1].mean(axis=1)) / weight.sum()])
+            scaled[nodes] = shift + magnify * (u[nodes] - shift)
+        u = scaled
     current = (X + u)[index]
     return np.concatenate([current, current[:, :1]], axis=1)
 
@@ -672,7 +697,7 @@ def main(argv=None):
         profiles = [profile_files(d, 'profile_t', args.tmax)
                     if os.path.isfile(os.path.join(d, 'cells.csv')) else {} for d in args.run_dirs]
         scale = ('displacements not magnified' if args.magnify == 1 else
-                 f'displacements magnified x{args.magnify:g} about each body\'s rigid translation')
+                 f'displacements magnified x{args.magnify:g} about each body\'s point nearest the others')
         for time in by_time(set().union(*profiles)):
             meshes = []
             for d, files, run in zip(args.run_dirs, profiles, runs):
