@@ -46,11 +46,12 @@ void check_output_directory(const std::string& directory)
 bool is_result_file(const std::string& file_name)
 {
   // Times are written with C++'s default format (e.g. 5, 0.05, 2.0275, 1e-05).
-  static const std::regex result_name("(history|exact|hertz|hertz_parameters|finite_sphere|"
-                                      "finite_sphere_parameters|impact_summary|cells)\\.csv|"
-                                      "(profile|contact_pressure)_t[-+.0-9eE]+\\.csv|"
-                                      "solution_[0-9]+\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd|"
-                                      "(original|parameters)\\.prm");
+  static const std::regex result_name(
+      "(history|exact|exact_summary|hertz|hertz_parameters|finite_sphere|"
+      "finite_sphere_parameters|impact_summary|cells)\\.csv|"
+      "(profile|contact_pressure)_t[-+.0-9eE]+\\.csv|"
+      "solution_[0-9]+\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd|"
+      "(original|parameters)\\.prm");
   return std::regex_match(file_name, result_name);
 }
 

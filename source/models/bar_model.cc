@@ -1,7 +1,10 @@
 #include <dyncontact/models/bar_model.h>
 #include <dyncontact/postprocess/history.h>
+#include <dyncontact/reference/impact_measures.h>
 
 #include <algorithm>
+#include <fstream>
+#include <iomanip>
 #include <numeric>
 
 namespace dyncontact
@@ -223,5 +226,57 @@ void BarModel::print_summary(std::ostream& out, const double time_step) const
   }
   if (geometry.wall_enabled)
     out << "  rigid wall at x = " << geometry.wall_position << "\n";
+}
+void BarModel::summarize_run(const std::string& directory,
+                             const History& history,
+                             std::ostream& log) const
+{
+  if (history.n_rows() < 3)
+  {
+    log << "  no comparison with the exact solution (exact_summary.csv): it needs at least 2 time "
+           "steps.\n";
+    return;
+  }
+  const std::vector<double> times = history.column("time");
+  const ExactBarSolution exact    = exact_solution(times.back());
+  std::vector<double> exact_force(times.size(), 0.);
+  for (unsigned int k = 0; k < times.size(); ++k)
+    for (unsigned int i = 0; i < exact.n_interfaces(); ++i)
+      exact_force[k] += exact.contact_force(i, times[k]);
+  const ImpactMeasures fe = measure_impact(times, history.column("contact_force"));
+  const ImpactMeasures ex = measure_impact(times, exact_force);
+  struct Row
+  {
+    std::string quantity;
+    double computed, exact;
+  };
+  std::vector<Row> rows = {{"contact_start", fe.contact_start, ex.contact_start},
+                           {"contact_end", fe.contact_end, ex.contact_end},
+                           {"duration", fe.duration, ex.duration},
+                           {"impulse", fe.impulse, ex.impulse},
+                           {"peak_force", fe.peak_force, ex.peak_force},
+                           {"ringing", fe.ringing, ex.ringing}};
+  const double t_end    = times.back();
+  for (unsigned int b = 0; b < geometry.bars.size(); ++b)
+    rows.push_back({"final_momentum_" + std::to_string(b + 1),
+                    history.value(history.n_rows() - 1, "momentum_" + std::to_string(b + 1)),
+                    exact.momentum(b, t_end)});
+  double exact_energy = 0.;
+  for (unsigned int b = 0; b < geometry.bars.size(); ++b)
+    exact_energy += exact.kinetic_energy(b, t_end) + exact.strain_energy(b, t_end);
+  rows.push_back(
+      {"final_total_energy", history.value(history.n_rows() - 1, "total_energy"), exact_energy});
+
+  std::ofstream file(directory + "/exact_summary.csv");
+  file << "quantity,computed,exact,difference,relative_difference\n" << std::setprecision(12);
+  log << "  run against the exact solution (computed / exact / difference):\n";
+  for (const Row& row : rows)
+  {
+    const double difference = row.computed - row.exact;
+    file << row.quantity << "," << row.computed << "," << row.exact << "," << difference << ","
+         << (row.exact != 0. ? difference / row.exact : 0.) << "\n";
+    log << "    " << std::left << std::setw(20) << row.quantity << std::right << std::setw(14)
+        << row.computed << std::setw(14) << row.exact << std::setw(14) << difference << "\n";
+  }
 }
 } // namespace dyncontact

@@ -41,6 +41,17 @@ public:
                        const std::vector<Node<1>>& monitors) const override;
   void print_summary(std::ostream& out, double time_step) const override;
 
+  /**
+   * exact_summary.csv: the run against the exact solution sampled at the same steps, both measured
+   * alike (measure_impact() on the total contact force: contact start, end, duration, impulse,
+   * peak, ringing), and each bar's final momentum and the final total energy. Columns quantity,
+   * computed, exact, difference, relative_difference (0 where the exact value is 0); the same
+   * table in `log`.
+   */
+  void summarize_run(const std::string& directory,
+                     const History& history,
+                     std::ostream& log) const override;
+
   /** The exact wave solution of these bars, tracked up to `end_time`. */
   ExactBarSolution exact_solution(double end_time) const;
 
