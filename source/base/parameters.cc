@@ -603,7 +603,7 @@ void TimeIntegrationParameters::parse_parameters(ParameterHandler& prm)
                        "integration/beta and gamma at 0.25 and 0.5 (their defaults) or out "
                        "(given beta = " +
                        format_number(beta) + ", gamma = " + format_number(gamma) + ").");
-    const double lowest = integrator == IntegratorFamily::hht ? 0.5 : 0.;
+    const double lowest = GeneralizedAlpha::lowest_spectral_radius(integrator);
     if (spectral_radius < lowest)
       throw InputError("Time integration/spectral radius = " + format_number(spectral_radius) +
                        " is not allowed with " + member + ": it must be in [" +
@@ -749,7 +749,8 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
                     "velocity-update: impenetrability with one contact force per step, then a "
                     "velocity jump that zeroes every active pair's relative normal velocity "
                     "(Laursen & Love 2002); dissipates at impact only. contact-stabilized, "
-                    "persistency and velocity-update need beta = 1/4, gamma = 1/2; "
+                    "persistency and velocity-update need Time integration/integrator = newmark "
+                    "with beta = 1/4, gamma = 1/2; "
                     "taylor-papadopoulos, persistency and velocity-update need Lagrange "
                     "multipliers.");
   prm.declare_entry("formulation",

@@ -361,9 +361,10 @@ void AxisymmetricMeshModel::write_reference(const std::string& directory,
   // Plain CSV files (a header row, then numbers); the constants that produced them beside them in
   // *_parameters.csv, one "quantity,value" row each.
   std::ofstream parameters(directory + "/hertz_parameters.csv");
-  parameters << "quantity,value\n" << std::setprecision(15) << "effective_radius,"
-             << hertz->effective_radius() << "\neffective_modulus," << hertz->effective_modulus()
-             << "\neffective_mass," << hertz->effective_mass() << "\nrelative_approach_speed,"
+  parameters << "quantity,value\n"
+             << std::setprecision(15) << "effective_radius," << hertz->effective_radius()
+             << "\neffective_modulus," << hertz->effective_modulus() << "\neffective_mass,"
+             << hertz->effective_mass() << "\nrelative_approach_speed,"
              << hertz->relative_approach_speed() << "\nfirst_touch_time,"
              << hertz->first_touch_time() << "\npeak_force," << hertz->maximum_force()
              << "\nduration," << hertz->contact_duration() << "\nimpulse," << hertz->impulse()

@@ -500,13 +500,13 @@ typename Simulation<dim>::Measures Simulation<dim>::measure() const
   {
     // The balance the step solved: at t_{n+1} for Newmark, at the intermediate times of a
     // dissipative member (M a_{n+1-alpha_m} + Q_{n+1-alpha_f} - W(t_{n+1-alpha_f})).
+    const bool at_intermediate_times    = step_old_acceleration.size() > 0;
     Vector<double> balance_acceleration = acceleration;
-    Vector<double> net_force            = net_internal_force();
-    if (step_old_acceleration.size() > 0)
+    Vector<double> net_force = at_intermediate_times ? internal_force : net_internal_force();
+    if (at_intermediate_times)
     {
       balance_acceleration.sadd(
           1. - integrator.alpha_m(), integrator.alpha_m(), step_old_acceleration);
-      net_force = internal_force;
       net_force.sadd(1. - integrator.alpha_f(), 1., step_old_net_force);
     }
     const double force_factor = contact_dynamics->contact_force_factor(integrator.rate_map());
@@ -644,7 +644,7 @@ std::string Simulation<dim>::problem_fingerprint() const
   text << std::setprecision(17) << "dimension " << dim << ", " << dof_handler.n_dofs() << " DoFs, "
        << contact->n_pairs() << " contact candidates, " << model->n_bodies() << " bodies, dt "
        << parameters.time.time_step << ", maximum step cuts " << parameters.time.max_step_cuts
-       << ", " << integrator.description() << ", "
+       << ", " << integrator.description(17) << ", "
        << contact_dynamics_names().name(parameters.contact.dynamics) << ", "
        << contact_formulation_names().name(parameters.contact.formulation);
   return text.str();

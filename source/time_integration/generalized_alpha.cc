@@ -1,6 +1,7 @@
 #include <dyncontact/time_integration/generalized_alpha.h>
 
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -24,7 +25,7 @@ GeneralizedAlpha::GeneralizedAlpha(const Family family,
   AssertThrow(time_step > 0., ExcMessage("The time step must be positive."));
   AssertThrow(family != Family::newmark,
               ExcMessage("Newmark is given by (beta, gamma), not by a spectral radius."));
-  const double lowest = family == Family::hht ? 0.5 : 0.;
+  const double lowest = lowest_spectral_radius(family);
   AssertThrow(rho >= lowest && rho <= 1.,
               ExcMessage("The spectral radius at infinite frequency must lie in [" +
                          format_number(lowest) + ", 1], not " + format_number(rho) + "."));
@@ -124,9 +125,15 @@ double GeneralizedAlpha::stability_limit() const
   return 2. * beta_value < gamma_value ? 1. / std::sqrt(gamma_value / 2. - beta_value)
                                        : std::numeric_limits<double>::infinity();
 }
-std::string GeneralizedAlpha::description() const
+double GeneralizedAlpha::lowest_spectral_radius(const Family family)
+{
+  return family == Family::hht ? 0.5 : 0.;
+}
+
+std::string GeneralizedAlpha::description(const int precision) const
 {
   std::ostringstream text;
+  text << std::setprecision(precision);
   if (family_value == Family::newmark)
     text << "Newmark (beta = " << beta_value << ", gamma = " << gamma_value << ")";
   else

@@ -39,7 +39,7 @@ struct TimeIntegrationParameters
   std::string deprecated_scheme;
   /// the member of the generalized-alpha family (Time integration/integrator)
   IntegratorFamily integrator;
-  /// rho_inf of a dissipative member; 1 for newmark (unused)
+  /// rho_inf of a dissipative member (Time integration/spectral radius); unused by newmark
   double spectral_radius;
   /// Newmark beta and gamma: as given for newmark, else the member's (set from rho_inf when read)
   double beta;

@@ -63,13 +63,16 @@ public:
    */
   GeneralizedAlpha(Family family, double spectral_radius, double time_step);
 
+  /** The smallest rho_inf of a dissipative member: 1/2 for hht (alpha_f <= 1/3), else 0. */
+  static double lowest_spectral_radius(Family family);
+
   Family family() const { return family_value; }
 
   /**
    * One line for logs: "Newmark (beta = 0.25, gamma = 0.5)" or, for a dissipative member, its
-   * name, rho_inf, alpha_m, alpha_f, beta and gamma.
+   * name, rho_inf, alpha_m, alpha_f, beta and gamma, the numbers with `precision` digits.
    */
-  std::string description() const;
+  std::string description(int precision = 6) const;
   double alpha_m() const { return alpha_m_value; }
   double alpha_f() const { return alpha_f_value; }
   double beta() const { return beta_value; }
