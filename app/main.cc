@@ -7,6 +7,7 @@
 #include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/bar_model.h>
 #include <dyncontact/simulation/interruption.h>
+#include <dyncontact/simulation/run_record.h>
 #include <dyncontact/simulation/setup_check.h>
 #include <dyncontact/simulation/simulation.h>
 
@@ -95,32 +96,66 @@ void prepare_run_directory(const dyncontact::ParameterReader& reader, const std:
       });
 }
 
-/** Runs the simulation of `model` in `dim` dimensions. */
+/** Runs the simulation of `model` in `dim` dimensions; its phases' wall times go to `record`. */
 template <int dim>
 void simulate(const dyncontact::RunParameters& parameters,
               std::unique_ptr<dyncontact::ProblemModel<dim>> model,
-              const dyncontact::CommandLine& command_line)
+              const dyncontact::CommandLine& command_line,
+              dyncontact::RunRecord* record)
 {
   dyncontact::Simulation<dim> simulation(parameters, std::move(model), std::cout);
   simulation.set_progress(!command_line.quiet);
-  simulation.run(command_line.resume_directory);
+  try
+  {
+    simulation.run(command_line.resume_directory);
+  }
+  catch (...)
+  {
+    if (record != nullptr)
+      record->set_wall_times(simulation.wall_times());
+    throw;
+  }
+  if (record != nullptr)
+    record->set_wall_times(simulation.wall_times());
 }
 
-/** A run of the parameter file, or the resumption of an interrupted one. */
-void run(const dyncontact::CommandLine& command_line)
+/** A run of the parameter file, or the resumption of an interrupted one, recorded in run.json. */
+void run(const dyncontact::CommandLine& command_line, const std::vector<std::string>& arguments)
 {
   using namespace dyncontact;
   const ParameterReader reader(command_line.parameter_file, command_line.overrides);
   const RunParameters& parameters = reader.parameters();
   print_warnings(parameters);
   prepare_run_directory(reader, command_line.resume_directory);
-  if (parameters.problem.geometry == GeometryKind::bars)
-    simulate<1>(parameters, std::make_unique<BarModel>(parameters.geometry), command_line);
-  else
-    simulate<2>(parameters,
-                std::make_unique<AxisymmetricMeshModel>(
-                    parameters.mesh, parameters.bodies, parameters.contact.pairs),
-                command_line);
+  std::unique_ptr<RunRecord> record; // rank 0 only
+  on_root_rank(
+      [&]
+      {
+        record = std::make_unique<RunRecord>(parameters.output.directory,
+                                             arguments,
+                                             command_line.parameter_file,
+                                             Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD));
+      });
+  try
+  {
+    if (parameters.problem.geometry == GeometryKind::bars)
+      simulate<1>(
+          parameters, std::make_unique<BarModel>(parameters.geometry), command_line, record.get());
+    else
+      simulate<2>(parameters,
+                  std::make_unique<AxisymmetricMeshModel>(
+                      parameters.mesh, parameters.bodies, parameters.contact.pairs),
+                  command_line,
+                  record.get());
+  }
+  catch (...)
+  {
+    if (record)
+      record->finish(RunOutcome::of(std::current_exception()));
+    throw;
+  }
+  if (record)
+    record->finish({0, "completed", "", 0});
 }
 } // namespace
 
@@ -131,10 +166,10 @@ int main(int argc, char** argv)
   // From the start, so that a signal during the set-up (meshing, a long parameter check) is also
   // answered with a checkpoint after the first step instead of ending the process unrecorded.
   install_interrupt_handlers();
+  const std::vector<std::string> arguments(argv + 1, argv + argc);
   try
   {
-    const CommandLine command_line =
-        CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
+    const CommandLine command_line = CommandLine::parse(arguments);
     switch (command_line.action)
     {
     case CommandLine::Action::help:
@@ -144,28 +179,21 @@ int main(int argc, char** argv)
       std::cout << "dyncontact " << version() << " (commit " << commit() << ")\n";
       return 0;
     case CommandLine::Action::print_parameters:
-      ParameterReader::print_documentation(std::cout);
+      ParameterReader::print_template(std::cout, command_line.template_kind);
       return 0;
     case CommandLine::Action::validate:
       validate(command_line);
       return 0;
     case CommandLine::Action::run:
-      run(command_line);
+      run(command_line, std::vector<std::string>(argv, argv + argc));
       return 0;
     }
-  }
-  catch (const InputError& error)
-  {
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-      std::cerr << "dyncontact: error: " << error.what() << std::endl;
-    return 2;
   }
   catch (const RunInterrupted& interruption)
   {
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
     {
-      const CommandLine command_line =
-          CommandLine::parse(std::vector<std::string>(argv + 1, argv + argc));
+      const CommandLine command_line = CommandLine::parse(arguments);
       std::cerr << "dyncontact: interrupted by " << interruption.what()
                 << "; resume with: dyncontact " << command_line.parameter_file << " --resume "
                 << interruption.directory()
@@ -182,22 +210,14 @@ int main(int argc, char** argv)
     MPI_Barrier(MPI_COMM_WORLD);
     return 128 + interruption.signal();
   }
-  catch (const SolverFailure& error)
+  catch (...)
   {
-    std::cerr << "dyncontact: solve failed: " << error.what() << std::endl;
-    return 3;
-  }
-  catch (const dealii::ExceptionBase& error)
-  {
-    std::ostringstream message;
-    error.print_info(message);
-    std::cerr << "dyncontact: internal error: " << message.str() << std::endl;
-    return 4;
-  }
-  catch (const std::exception& error)
-  {
-    std::cerr << "dyncontact: internal error: " << error.what() << std::endl;
-    return 4;
+    const RunOutcome outcome = RunOutcome::of(std::current_exception());
+    if (outcome.kind != "input error")
+      std::cerr << "dyncontact: " << outcome.kind << ": " << outcome.message << std::endl;
+    else if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::cerr << "dyncontact: error: " << outcome.message << std::endl;
+    return outcome.exit_code;
   }
   return 0;
 }

@@ -44,3 +44,21 @@ run_two_at_a_time() # function extra-arguments...
   xargs -d '\n' -P 2 -I{} bash -c \
     'IFS="|" read -r -a fields <<<"$1"; shift; "$0" "${fields[@]}" "$@"' "$function" {} "$@"
 }
+
+# Seconds elapsed since START (a `date +%s.%N` reading), with awk, which every Debian has.
+seconds_since() # start
+{
+  awk -v start="$1" -v now="$(date +%s.%N)" 'BEGIN { printf "%.3f\n", now - start }'
+}
+
+# Prints the CSV file as a table with aligned columns.
+print_table() # file.csv
+{
+  /usr/bin/python3 -c '
+import csv, sys
+rows = list(csv.reader(open(sys.argv[1])))
+widths = [max(len(row[i]) for row in rows if i < len(row)) for i in range(max(map(len, rows)))]
+for row in rows:
+    print("  ".join(cell.ljust(width) for cell, width in zip(row, widths)).rstrip())' "$1"
+}
+export -f seconds_since print_table

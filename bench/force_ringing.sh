@@ -81,5 +81,5 @@ for directory in sorted(glob.glob(sys.argv[1] + '/*')):
     print(f"{os.path.basename(directory)},{float(summary['ringing']['computed']):.5f},"
           f"{ringing(histories['multiplier']):.5f},{ringing(histories['pressure']):.5f}")
 PY
-column -s, -t "$table"
+print_table "$table"
 $all_succeeded

@@ -107,7 +107,7 @@ run_case() # label density material level pole_size zone_radius dt centre_z end_
     echo "[hertz_limit] FAILED $label, see $output.log" >&2
     return 1
   fi
-  seconds=$(echo "$(date +%s.%N) - $start" | bc)
+  seconds=$(seconds_since "$start")
   printf '%s|%s|%s|%s|%s|%s|%s|%s|%s\n' "$label" "$density" "$material" "$level" "$pole_size" \
     "$zone_radius" "$dt" "$centre_z" "$seconds" >"$output/case"
   printf '[hertz_limit] done   %s in %.1f s (%d of %d runs finished)\n' "$label" "$seconds" \

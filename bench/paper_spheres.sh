@@ -15,8 +15,8 @@ for case in spheres_rho1 spheres_rho0.001; do
     start=$(date +%s.%N)
     mpirun -np "$ranks" build/dyncontact "prm/$case.prm" --output "$output" \
       --set "Output/vtu interval=0" "$@" >"$output.log"
-    end=$(date +%s.%N)
-    /usr/bin/python3 - "$case" "$ranks" "$(echo "$end - $start" | bc)" "$output" >>"$table" <<'PY'
+    seconds=$(seconds_since "$start")
+    /usr/bin/python3 - "$case" "$ranks" "$seconds" "$output" >>"$table" <<'PY'
 import csv, re, sys
 case, ranks, seconds, output = sys.argv[1:]
 rows = list(csv.DictReader(open(output + '/history.csv')))[1:]
@@ -28,4 +28,4 @@ print(f"{case},{ranks},{float(seconds):.1f},{dofs},{len(rows)},{sum(solves):.0f}
 PY
   done
 done
-column -s, -t "$table"
+print_table "$table"

@@ -40,7 +40,7 @@ run_case() # refinement time_step material extra-arguments...
     --set "Time integration/time step=$time_step" --set "Time integration/end time=$end_time" \
     --set "Bodies/Body 1/density=$density" --set "Bodies/Body 2/density=$density" "$@" ||
     return 1
-  echo "$(date +%s.%N) - $start" | bc >"$output/wall_seconds"
+  seconds_since "$start" >"$output/wall_seconds"
 }
 export -f run_case
 
@@ -77,5 +77,5 @@ for directory in sorted(glob.glob(sys.argv[1] + '/rho*_r*_dt*')):
           f"{values[0]:.4f},{values[1]:+.4%},{values[2]:.5f},{values[3]:+.4%},{values[4]:.5f},"
           f"{values[5]:+.4%},{float(summary['ringing']['computed']):.5f},{seconds:.0f}")
 PY
-column -s, -t "$table"
+print_table "$table"
 $all_succeeded

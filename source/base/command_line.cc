@@ -28,7 +28,11 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
     if (argument == "--help" || argument == "-h")
       set_action(Action::help);
     else if (argument == "--print-parameters")
+    {
       set_action(Action::print_parameters);
+      if (i + 1 < arguments.size() && (arguments[i + 1] == "bars" || arguments[i + 1] == "mesh"))
+        command_line.template_kind = arguments[++i];
+    }
     else if (argument == "--version")
       set_action(Action::version);
     else if (argument == "--validate") // the parameter file may come before or after it
@@ -89,8 +93,11 @@ std::string CommandLine::usage()
          "  dyncontact --validate FILE.prm [--set ...]   (or FILE.prm --validate)\n"
          "      check the parameters and the mesh as a run does before its first step, run\n"
          "      nothing, write nothing.\n"
-         "  dyncontact --print-parameters\n"
-         "      print every entry with its documentation, default and allowed values.\n"
+         "  dyncontact --print-parameters [bars|mesh]   (bars if not given)\n"
+         "      print a parameter file for that kind of problem with every entry it takes,\n"
+         "      its documentation, default and allowed values; it runs as printed (bars: one\n"
+         "      bar at rest; mesh: two spheres at rest in the shipped meshes/two_spheres.geo,\n"
+         "      with one contact pair). Save it, edit it, run it.\n"
          "  dyncontact --version\n"
          "      print the version and the git commit of the build.\n"
          "  dyncontact --help\n"
@@ -98,8 +105,9 @@ std::string CommandLine::usage()
          "A run writes into Output/directory: history.csv (one row per step), the reference\n"
          "solution (exact.csv for bars, hertz.csv and impact_summary.csv for two identical\n"
          "spheres), profile_t<T>.csv (and contact_pressure_t<T>.csv, cells.csv for meshes),\n"
-         "solution_*.vtu with solution.pvd, original.prm (the input as given) and\n"
-         "parameters.prm (every value in effect). It first removes these files of an earlier\n"
-         "run from the directory (other files stay).\n";
+         "solution_*.vtu with solution.pvd (and contact_surface_*.vtu, contact_surface.pvd),\n"
+         "original.prm (the input as given), parameters.prm (every value in effect, re-runnable\n"
+         "from any directory) and run.json (version, commit, command line, times, outcome). It\n"
+         "first removes these files of an earlier run from the directory (other files stay).\n";
 }
 } // namespace dyncontact

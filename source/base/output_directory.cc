@@ -50,8 +50,8 @@ bool is_result_file(const std::string& file_name)
       "(history|exact|exact_summary|hertz|hertz_parameters|finite_sphere|"
       "finite_sphere_parameters|impact_summary|cells)\\.csv|"
       "(profile|contact_pressure)_t[-+.0-9eE]+\\.csv|"
-      "solution_[0-9]+\\.([0-9]+\\.vtu|pvtu)|solution\\.pvd|"
-      "(original|parameters)\\.prm");
+      "(solution|contact_surface)(_[0-9]+\\.([0-9]+\\.vtu|pvtu)|\\.pvd)|"
+      "(original|parameters)\\.prm|run\\.json");
   return std::regex_match(file_name, result_name);
 }
 

@@ -94,8 +94,23 @@ std::string readable_entry_error(const std::string& message, const std::string& 
       R"(You can't ask for entry <(.*)> you have not yet declared\.?)");
   static const std::regex unknown_from_file(
       R"(Line <(\d+)> of file <.*>: No entry with name <(.*)> was declared in the current subsection\.?)");
+  static const std::regex unknown_subsection(
+      R"(Line <(\d+)> of file <.*: There is no such subsection to be entered: (.*))");
   const std::string where = entry_path.empty() ? std::string("the value") : entry_path;
   std::smatch match;
+  if (std::regex_match(message, match, unknown_subsection))
+  {
+    const std::string name = match[2];
+    const std::string why =
+        name == "Geometry"                   ? "it is for Problem/geometry = bars"
+        : name == "Mesh" || name == "Bodies" ? "it is for Problem/geometry = axisymmetric mesh"
+        : name.rfind("Bar ", 0) == 0         ? "there are only Geometry/number of bars bars"
+        : name.rfind("Body ", 0) == 0        ? "there are only Bodies/number of bodies bodies"
+        : name.rfind("Pair ", 0) == 0        ? "there are only Contact/number of pairs pairs"
+                                             : "no such subsection is declared";
+    return "line " + std::string(match[1]) + ": subsection '" + name + "' is not taken: " + why +
+           " (dyncontact --print-parameters bars|mesh prints what each kind of problem takes).";
+  }
   if (std::regex_match(message, match, value_from_set))
     return where + " = " + std::string(match[1]) + " is not allowed: it must be " +
            readable_pattern(match[2]) + ".";
@@ -423,6 +438,8 @@ void MeshParameters::parse_parameters(ParameterHandler& prm,
   if (extension != ".geo" && extension != ".msh")
     throw InputError("Mesh/file = '" + given.string() + "': unknown extension '" + extension +
                      "'; allowed are .geo (meshed by gmsh) and .msh (a gmsh mesh).");
+  // The record (parameters.prm) names the file absolutely, so it runs from any directory.
+  prm.set("file", std::filesystem::absolute(file).lexically_normal().string());
   const std::string given_parameters = prm.get("geo parameters");
   geo_parameters.clear();
   for (const auto& pair : Utilities::split_string_list(given_parameters, ','))
@@ -1070,7 +1087,21 @@ void OutputParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry("vtu interval",
                     "10",
                     Patterns::Integer(0),
-                    "Write VTU fields (with a PVD record) every this many steps [-]; 0 = never.");
+                    "Write a VTU frame of the fields (solution_<row>.pvtu, listed with its time in "
+                    "solution.pvd; <row> is the frame's row of history.csv) every this many "
+                    "steps [-]; 0 = not at an interval.");
+  prm.declare_entry("vtu times",
+                    "",
+                    Patterns::List(Patterns::Double(0.)),
+                    "Comma-separated times [time] at which a VTU frame is also written, at the "
+                    "time step closest to each.");
+  prm.declare_entry("vtu during contact",
+                    "true",
+                    Patterns::Bool(),
+                    "If VTU output is on (vtu interval > 0 or vtu times given), also write a "
+                    "frame at every step with active contact pairs, cut steps included, so that "
+                    "every contact is seen however short; surface contact also writes "
+                    "contact_surface.pvd (pressure, gap and active flag on the slave surfaces).");
   prm.declare_entry("checkpoint interval",
                     "0",
                     Patterns::Integer(),
@@ -1098,6 +1129,10 @@ void OutputParameters::parse_parameters(ParameterHandler& prm)
   for (const auto& time : Utilities::split_string_list(prm.get("profile times")))
     profile_times.push_back(Utilities::string_to_double(time));
   vtu_interval = prm.get_integer("vtu interval");
+  vtu_times.clear();
+  for (const auto& time : Utilities::split_string_list(prm.get("vtu times")))
+    vtu_times.push_back(Utilities::string_to_double(time));
+  vtu_during_contact = prm.get_bool("vtu during contact");
   checkpoint_interval =
       static_cast<unsigned int>(get_in_range(prm, "checkpoint interval", "Output", 0., 1e8));
   write_exact_solution = prm.get_bool("write exact solution");
@@ -1260,10 +1295,39 @@ void ParameterReader::write_records(const std::string& directory) const
     throw InputError("Output/directory = '" + directory + "': cannot write the parameter records.");
 }
 
-void ParameterReader::print_documentation(std::ostream& out)
+void ParameterReader::print_template(std::ostream& out, const std::string& kind)
 {
+  const bool mesh = kind == "mesh";
+  AssertThrow(mesh || kind == "bars", ExcMessage("unknown template kind " + kind));
+  const ProblemSize size{mesh ? GeometryKind::axisymmetric_mesh : GeometryKind::bars,
+                         1,
+                         mesh ? 2u : 1u,
+                         mesh ? 1u : 0u};
   ParameterHandler prm;
-  declare_all(prm, std::nullopt);
+  declare_all(prm, size);
+  const auto set = [&prm](const std::vector<std::string>& path, const std::string& value)
+  {
+    for (unsigned int i = 0; i + 1 < path.size(); ++i)
+      prm.enter_subsection(path[i]);
+    prm.set(path.back(), value);
+    for (unsigned int i = 0; i + 1 < path.size(); ++i)
+      prm.leave_subsection();
+  };
+  set({"Problem", "geometry"}, geometry_names().name(size.geometry));
+  if (mesh)
+  {
+    // meshes/two_spheres.geo: physical surfaces 1, 2 are the spheres, curves 2, 3 their surfaces.
+    set({"Mesh", "file"}, std::string(DYNCONTACT_MESH_DIRECTORY) + "/two_spheres.geo");
+    set({"Bodies", "number of bodies"}, "2");
+    set({"Contact", "number of pairs"}, "1");
+    set({"Contact", "Pair 1", "slave boundary"}, "2");
+    set({"Contact", "Pair 1", "master boundary"}, "3");
+  }
+  out << "# A dyncontact parameter file for " << (mesh ? "axisymmetric mesh" : "bars")
+      << " problems, printed by dyncontact --print-parameters " << kind
+      << ": every entry with its default.\n# It runs as it is; edit the values. "
+         "(--print-parameters "
+      << (mesh ? "bars" : "mesh") << " prints the other kind.)\n";
   prm.print_parameters(out, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
 }
 } // namespace dyncontact

@@ -59,9 +59,10 @@ Tensor<2, 3> AxisymmetricKinematics::deformation_gradient(const Tensor<2, 2>& di
                                                           const Tensor<1, 2>& displacement,
                                                           const Point<2>& X) const
 {
-  Assert(X[0] > 0., ExcMessage("The hoop strain u_r/r is undefined on the axis r = 0."));
+  Assert(X[0] >= 0., ExcMessage("An axisymmetric point lies at r < 0."));
   Tensor<2, 3> F = identity_plus_embedded(displacement_gradient);
-  F[2][2] += displacement[0] / X[0];
+  // On the axis u_r = 0 by symmetry, and u_r / r tends to du_r / dr.
+  F[2][2] += X[0] > 0. ? displacement[0] / X[0] : displacement_gradient[0][0];
   return F;
 }
 

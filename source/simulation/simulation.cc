@@ -163,15 +163,22 @@ void Simulation<dim>::index_dofs()
 template <int dim>
 void Simulation<dim>::schedule_and_log()
 {
-  const double dt = parameters.time.time_step;
-  n_steps         = parameters.time.n_steps();
-  for (const double profile_time : parameters.output.profile_times)
-    if (profile_time > (n_steps + 0.5) * dt)
-      log << "WARNING: Output/profile times: " << profile_time
-          << " lies after the end of the run (t = " << n_steps * dt
-          << "); no profile is written for it.\n";
-    else
-      profile_steps.insert(static_cast<unsigned int>(std::lround(profile_time / dt)));
+  const double dt     = parameters.time.time_step;
+  n_steps             = parameters.time.n_steps();
+  const auto schedule = [&](const std::vector<double>& times, const std::string& entry)
+  {
+    std::set<unsigned int> steps;
+    for (const double t : times)
+      if (t > (n_steps + 0.5) * dt)
+        log << "WARNING: Output/" << entry << ": " << t
+            << " lies after the end of the run (t = " << n_steps * dt
+            << "); nothing is written for it.\n";
+      else
+        steps.insert(static_cast<unsigned int>(std::lround(t / dt)));
+    return steps;
+  };
+  profile_steps = schedule(parameters.output.profile_times, "profile times");
+  vtu_steps     = schedule(parameters.output.vtu_times, "vtu times");
 
   log << "dyncontact: " << dof_handler.n_dofs() << " displacement DoFs, " << contact->n_pairs()
       << " contact candidate(s), " << n_steps << " steps of dt = " << dt << ", "
@@ -470,16 +477,21 @@ Vector<double> Simulation<dim>::contact_traction(const std::vector<double>& pres
 }
 
 template <int dim>
-void Simulation<dim>::write_contact_pressure(const std::vector<double>& pressures) const
+std::vector<typename FieldOutput<dim>::PressureSample>
+Simulation<dim>::pressure_samples(const std::vector<double>& pressures) const
 {
   std::vector<typename FieldOutput<dim>::PressureSample> samples;
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
-    samples.push_back({current_position(contact->candidate_pairs()[k].slave, displacement),
+  {
+    const Node<dim>& slave = contact->candidate_pairs()[k].slave;
+    samples.push_back({slave,
+                       current_position(slave, displacement),
                        contact->gap(k, displacement),
                        contact->active_multiplier(k),
                        pressures[k],
                        contact->is_active(k)});
-  field_output->write_contact_pressure(time, samples);
+  }
+  return samples;
 }
 
 template <int dim>
@@ -588,25 +600,35 @@ void Simulation<dim>::record_step(const Measures& measures,
     row.insert(row.end(), {measures.momenta[b], impulses[b], u_tip, v_tip, a_tip});
   }
   step_history.add_row(row);
-  if (step_history.n_rows() == 1 || nominal_step > 0)
-    nominal_rows.push_back(step_history.n_rows() - 1);
+  const unsigned int frame   = step_history.n_rows() - 1; // VTU files are numbered by row
+  const bool on_nominal_grid = frame == 0 || nominal_step > 0;
+  if (on_nominal_grid)
+    nominal_rows.push_back(frame);
 
-  const unsigned int step = step_history.n_rows() == 1 ? 0 : nominal_step;
-  if (step_history.n_rows() > 1 && nominal_step == 0)
-    return; // profiles and fields on the nominal grid only
+  const unsigned int step        = frame == 0 ? 0 : nominal_step;
+  const OutputParameters& output = parameters.output;
+  const bool vtu_on              = output.vtu_interval > 0 || !vtu_steps.empty();
+  const bool vtu_frame =
+      (on_nominal_grid && ((output.vtu_interval > 0 && step % output.vtu_interval == 0) ||
+                           vtu_steps.count(step) > 0)) ||
+      (vtu_on && output.vtu_during_contact && contact->n_active() > 0);
   TimerOutput::Scope scope(timer, "output");
-  if (parameters.output.vtu_interval > 0 && step % parameters.output.vtu_interval == 0)
+  if (vtu_frame)
   {
     const Vector<double> traction =
         surface_contact ? contact_traction(pressures) : Vector<double>();
     field_output->write_fields(
-        step, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
+        frame, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
+    if (surface_contact)
+      field_output->write_contact_surface(frame, time, displacement, pressure_samples(pressures));
   }
+  if (!on_nominal_grid)
+    return; // profiles on the nominal grid only
   if (profile_steps.count(step) > 0 && is_root_rank)
   {
     field_output->write_profile(time, nodes->nodes(), displacement, velocity, acceleration);
     if (surface_contact)
-      write_contact_pressure(pressures);
+      field_output->write_contact_pressure(time, pressure_samples(pressures));
   }
 }
 
@@ -746,7 +768,17 @@ void Simulation<dim>::start(const std::string& resume_directory)
 {
   prepare();
   const std::string& directory = parameters.output.directory;
-  field_output = std::make_unique<FieldOutput<dim>>(dof_handler, mapping, directory);
+  std::set<types::boundary_id> slave_surfaces;
+  const ContactDescription<dim> description = model->contact_description(*nodes);
+  for (const auto& pair : description.surface_pairs)
+    slave_surfaces.insert(pair.surface_a);
+  for (const auto& pair : description.plane_pairs)
+    slave_surfaces.insert(pair.surface);
+  std::vector<std::shared_ptr<const Material>> materials;
+  for (const BodyMaterial& body : model->body_materials())
+    materials.push_back(body.material);
+  field_output = std::make_unique<FieldOutput<dim>>(
+      dof_handler, mapping, *kinematics, materials, slave_surfaces, directory);
   if (dim == 2 && is_root_rank)
     field_output->write_cell_outlines(nodes->nodes());
 

@@ -1,6 +1,7 @@
 # Runs COMMAND ('|'-separated arguments), expects exit code 0, that stdout matches EXPECTED (a
 # regular expression) and that every file in FILES ('|'-separated, relative to DIRECTORY) exists
-# and is not empty. DIRECTORY is removed first so that stale files cannot pass the test.
+# and is not empty. DIRECTORY is removed first so that stale files cannot pass the test. If CHECK
+# is given ('|'-separated), it runs afterwards and must exit 0 too.
 string(REPLACE "|" ";" command "${COMMAND}")
 if(DIRECTORY)
   file(REMOVE_RECURSE "${DIRECTORY}")
@@ -27,5 +28,13 @@ if(RECORD_MATCHES)
   file(READ "${DIRECTORY}/parameters.prm" record)
   if(NOT record MATCHES "${RECORD_MATCHES}")
     message(FATAL_ERROR "parameters.prm does not match '${RECORD_MATCHES}'")
+  endif()
+endif()
+if(CHECK)
+  string(REPLACE "|" ";" check "${CHECK}")
+  execute_process(COMMAND ${check} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
+  message("${output}${error}")
+  if(NOT result EQUAL 0)
+    message(FATAL_ERROR "the check failed (exit code ${result})")
   endif()
 endif()

@@ -9,7 +9,8 @@ namespace dyncontact
 {
 /**
  * The executable's command line: `dyncontact FILE.prm [--set "Section/entry=value"]...
- * [--output DIR]`, `--validate` with a FILE.prm anywhere, `--print-parameters`, `--version`,
+ * [--output DIR]`, `--validate` with a FILE.prm anywhere, `--print-parameters [bars|mesh]`,
+ * `--version`,
  * `--help`; options in any order. Parsing only; running is main's job.
  */
 struct CommandLine
@@ -27,7 +28,8 @@ struct CommandLine
   std::string parameter_file;
   std::vector<std::string> overrides; ///< "Section/entry=value", in order; --output adds one
   std::string resume_directory;       ///< --resume DIR: continue from DIR/checkpoint.bin
-  bool quiet = false;                 ///< --quiet: no progress lines
+  bool quiet                = false;  ///< --quiet: no progress lines
+  std::string template_kind = "bars"; ///< --print-parameters KIND: "bars" or "mesh"
 
   /** Throws InputError naming the offending argument. */
   static CommandLine parse(const std::vector<std::string>& arguments);

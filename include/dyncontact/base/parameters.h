@@ -184,6 +184,9 @@ struct OutputParameters
   std::string directory;
   std::vector<double> profile_times;
   unsigned int vtu_interval;
+  std::vector<double> vtu_times;
+  /// with VTU output on, also a frame at every step (cut steps included) with active pairs
+  bool vtu_during_contact;
   /// write checkpoint.bin every this many nominal steps (0: only when interrupted)
   unsigned int checkpoint_interval;
   bool write_exact_solution;
@@ -285,8 +288,13 @@ public:
    */
   void write_records(const std::string& directory) const;
 
-  /** Prints every entry with its documentation, default and allowed values. */
-  static void print_documentation(std::ostream& out);
+  /**
+   * Prints a parameter file for problems of `kind` ("bars" or "mesh"): every entry such a problem
+   * takes, with its documentation, default and allowed values. It runs as printed: bars, one bar
+   * at rest; mesh, two spheres at rest in the shipped meshes/two_spheres.geo (named by its
+   * absolute path in the source tree) with one contact pair.
+   */
+  static void print_template(std::ostream& out, const std::string& kind);
 
 private:
   /**

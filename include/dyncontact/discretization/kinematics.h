@@ -6,6 +6,8 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
+#include <array>
+#include <string>
 #include <vector>
 
 namespace dyncontact
@@ -38,6 +40,12 @@ public:
 
   /** Reference volume per unit dX of the dim-dimensional model (area, 2 pi r, thickness). */
   virtual double measure_factor(const Point<dim>& X, types::material_id body) const = 0;
+
+  /**
+   * The names of the three axes of F, as stress and strain components are named in the output:
+   * {"x", "y", "z"}, or {"r", "z", "theta"} for axisymmetry.
+   */
+  virtual std::array<std::string, 3> axis_names() const { return {{"x", "y", "z"}}; }
 };
 
 /**
@@ -71,9 +79,11 @@ private:
  *   F = [[1 + du_r/dr, du_r/dz, 0], [du_z/dr, 1 + du_z/dz, 0], [0, 0, 1 + u_r/r]],
  *
  * with dV = 2 pi r dr dz. Torsion (a hoop displacement) is not represented. On the axis r = 0 the
- * hoop terms u_r/r of F and shape_value/r of its variation are 0/0. Gauss quadrature points lie
- * inside cells, never on the axis, so F is never needed there: asking for F or its variation at
- * r <= 0 is a programming error (Assert). The body argument of measure_factor() is ignored.
+ * hoop term u_r/r of F is 0/0; there u_r = 0 by symmetry, and F takes its limit
+ * F_33 = 1 + du_r/dr (the field output evaluates stresses at nodes on the axis). The variation's
+ * shape_value/r has no such limit for a single shape function; Gauss quadrature points lie inside
+ * cells, never on the axis, so asking for the variation at r <= 0, or for F at r < 0, is a
+ * programming error (Assert). The body argument of measure_factor() is ignored.
  */
 class AxisymmetricKinematics : public Kinematics<2>
 {
@@ -86,6 +96,7 @@ public:
                                               const Tensor<1, 2>& shape_gradient,
                                               const Point<2>& X) const override;
   double measure_factor(const Point<2>& X, types::material_id body) const override;
+  std::array<std::string, 3> axis_names() const override { return {{"r", "z", "theta"}}; }
 };
 
 /**

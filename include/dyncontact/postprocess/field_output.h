@@ -1,16 +1,22 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/node_index.h>
+#include <dyncontact/material/material.h>
+#include <dyncontact/postprocess/stress_postprocessor.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/vector.h>
 
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/utility.hpp>
 #include <boost/serialization/vector.hpp>
+#include <memory>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -18,25 +24,37 @@
 namespace dyncontact
 {
 /**
- * Nodal fields for people to look at: VTU files of displacement, velocity, acceleration and body
- * id for ParaView (one file per MPI rank and a .pvtu record per step), listed with their times in
- * `solution.pvd` (rewritten after every step, so it is valid even if the run stops), and CSV
- * profiles of every node at chosen times (written by rank 0). It computes nothing.
+ * Fields for people to look at. For ParaView: VTU files with high-order (VTK Lagrange) cells, so a
+ * Q2 cell is one curved 9-node quadrilateral, carrying displacement, velocity, acceleration,
+ * contact traction, Cauchy stress, Green-Lagrange strain, von Mises stress (StressPostprocessor)
+ * and body id (one file per MPI rank and a .pvtu record per frame), listed with their times in
+ * `solution.pvd`; and the contact surfaces (the slave sides) as curves with the contact pressure,
+ * gap and active flag of every pair, in `contact_surface.pvd`. Both records are rewritten after
+ * every frame, so they are valid even if the run stops. Also CSV profiles of every node and of the
+ * contact pressure at chosen times (written by rank 0). It computes nothing but the stresses.
  */
 template <int dim>
 class FieldOutput
 {
 public:
+  /**
+   * `materials[b]` is the law of body b (for the stresses); `contact_surfaces` are the boundary
+   * ids of the slave contact surfaces (empty: no contact surface output). The DoFHandler must
+   * carry an FESystem of dim copies of one scalar element. Everything passed must outlive this.
+   */
   FieldOutput(const DoFHandler<dim>& dof_handler,
               const Mapping<dim>& mapping,
+              const Kinematics<dim>& kinematics,
+              std::vector<std::shared_ptr<const Material>> materials,
+              std::set<types::boundary_id> contact_surfaces,
               std::string directory);
 
   /**
-   * Writes `solution_<step>.<rank>.vtu` and `solution_<step>.pvtu`, and updates `solution.pvd`.
-   * `contact_traction` (a nodal vector field, the traction the other body exerts; its magnitude is
-   * the contact pressure) is written if not null.
+   * Writes `solution_<frame>.<rank>.vtu` and `solution_<frame>.pvtu`, and updates `solution.pvd`
+   * with `time`. `contact_traction` (a nodal vector field, the traction the other body exerts; its
+   * magnitude is the contact pressure) is written if not null.
    */
-  void write_fields(unsigned int step,
+  void write_fields(unsigned int frame,
                     double time,
                     const Vector<double>& displacement,
                     const Vector<double>& velocity,
@@ -46,7 +64,8 @@ public:
   /** One contact pair at one time, as written by write_contact_pressure(). */
   struct PressureSample
   {
-    Point<dim> position; ///< current position of the pair's node on body A
+    Node<dim> node;      ///< the pair's node on body A (the slave node)
+    Point<dim> position; ///< its current position
     double gap;
     double multiplier; ///< the pair's nodal contact force (compression positive), zero if inactive
     double pressure;   ///< consistent contact pressure, see NodeToNodeContact::contact_pressures()
@@ -59,6 +78,18 @@ public:
    * active.
    */
   void write_contact_pressure(double time, const std::vector<PressureSample>& samples) const;
+
+  /**
+   * Writes the faces of the contact surfaces as `contact_surface_<frame>.<rank>.vtu` and
+   * `contact_surface_<frame>.pvtu`, and updates `contact_surface.pvd`: displacement (to warp the
+   * curves by), and per node of a pair the contact pressure [force/area], the gap [length] and
+   * `active` (1 or 0); nodes of these faces without a pair get NaN. Does nothing without contact
+   * surfaces.
+   */
+  void write_contact_surface(unsigned int frame,
+                             double time,
+                             const Vector<double>& displacement,
+                             const std::vector<PressureSample>& samples);
 
   /**
    * Writes `cells.csv`: per cell its body (1-based) and the rows, in the node order of
@@ -82,12 +113,21 @@ public:
   void serialize(Archive& archive, const unsigned int)
   {
     archive& pvd_records;
+    archive& surface_pvd_records;
   }
 
 private:
   const DoFHandler<dim>& dof_handler;
   const Mapping<dim>& mapping;
+  StressPostprocessor<dim> stresses;
+  std::set<types::boundary_id> contact_surfaces;
   std::string directory;
+  /** The scalar element of the FESystem and its DoFs, for the nodal fields of the surfaces. */
+  std::unique_ptr<FiniteElement<dim>> scalar_fe;
+  DoFHandler<dim> scalar_dof_handler;
+  /** The scalar DoF of each DoF of component 0 (invalid for the other components). */
+  std::vector<types::global_dof_index> scalar_dof;
   std::vector<std::pair<double, std::string>> pvd_records;
+  std::vector<std::pair<double, std::string>> surface_pvd_records;
 };
 } // namespace dyncontact

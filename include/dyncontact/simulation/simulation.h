@@ -26,6 +26,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <chrono>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <set>
@@ -75,6 +76,12 @@ public:
 
   /** Whether run() prints the progress line (default true; `--quiet` switches it off). */
   void set_progress(const bool show) { show_progress = show; }
+
+  /** Wall time [s] of each timed phase so far (assembly, factorization, output, ...). */
+  std::map<std::string, double> wall_times() const
+  {
+    return timer.get_summary_data(TimerOutput::total_wall_time);
+  }
 
   /** The recorded history, one row per accepted (sub-)step including t = 0. */
   const History& history() const { return step_history; }
@@ -220,8 +227,9 @@ private:
   Vector<double> net_internal_force() const;
   /** The nodal traction -p n on body A and p n on body B of every pair, p = `pressures`. */
   Vector<double> contact_traction(const std::vector<double>& pressures) const;
-  /** Writes the contact pressure profile of the current step (surface contact only). */
-  void write_contact_pressure(const std::vector<double>& pressures) const;
+  /** Per candidate pair: its slave node, gap, multiplier, `pressures[k]` and active flag. */
+  std::vector<typename FieldOutput<dim>::PressureSample>
+  pressure_samples(const std::vector<double>& pressures) const;
   std::vector<std::string> history_columns() const;
 
   const RunParameters parameters;
@@ -249,6 +257,7 @@ private:
   unsigned int innermost_pair = 0; ///< candidate pair nearest to the axis (centre_pressure)
   std::unique_ptr<FieldOutput<dim>> field_output;
   std::set<unsigned int> profile_steps; ///< steps at which a profile is written
+  std::set<unsigned int> vtu_steps;     ///< nominal steps of Output/vtu times
   double penalty_factor =
       0.; ///< the factor in force (Contact/penalty factor, or the automatic one)
   bool penalty_lowered = false; ///< Contact/penalty factor = auto lowered the springs
