@@ -640,8 +640,10 @@ def parse_args(argv):
                              'zoomed on the contact)')
     parser.add_argument('--tmax', type=float, metavar='T', help='clip the time axis at T')
     parser.add_argument('--magnify', type=float, default=1.0, metavar='M',
-                        help='deformed meshes: scale each body\'s displacement about its rigid '
-                             'translation by M (default 1: true displacements)')
+                        help='deformed meshes: scale each body\'s displacement by M about that '
+                             'of its node nearest the other bodies, so bodies in contact stay '
+                             'touching (one body: about its rigid axial translation; default 1: '
+                             'true displacements)')
     args = parser.parse_args(argv)
     if args.labels and len(args.labels) != len(args.run_dirs):
         parser.error(f'{len(args.labels)} labels given for {len(args.run_dirs)} run directories')

@@ -51,7 +51,7 @@ bool is_result_file(const std::string& file_name)
       "finite_sphere_parameters|impact_summary|cells)\\.csv|"
       "(profile|contact_pressure)_t[-+.0-9eE]+\\.csv|"
       "(solution|contact_surface)(_[0-9]+\\.([0-9]+\\.vtu|pvtu)|\\.pvd)|"
-      "(original|parameters)\\.prm|run\\.json");
+      "(original|parameters)\\.prm|run\\.json|checkpoint\\.bin(\\.tmp)?");
   return std::regex_match(file_name, result_name);
 }
 

@@ -9,7 +9,9 @@ _FORMATS = {"Float32": "f", "Float64": "d", "Int32": "i", "UInt8": "B", "Int64":
 
 
 def _decode(array):
-    text = "".join(array.text.split())
+    text = "".join((array.text or "").split()) if array is not None else ""
+    if not text:
+        return []  # an empty piece (an MPI rank without cells of this output)
     # A header of four uint32 (blocks, block size, last block size, compressed size), base64 on
     # its own, then the compressed block.
     header_length = 4 * ((16 + 2) // 3)

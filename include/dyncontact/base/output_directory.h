@@ -23,7 +23,8 @@ void check_output_directory(const std::string& directory);
  * Whether `file_name` (a name without directory) is one that a dyncontact run writes into its
  * output directory: history.csv, exact.csv, hertz.csv, impact_summary.csv, cells.csv,
  * profile_t<T>.csv, contact_pressure_t<T>.csv, solution_<row>.<rank>.vtu, solution_<row>.pvtu,
- * solution.pvd, the same three of contact_surface, original.prm, parameters.prm and run.json.
+ * solution.pvd, the same three of contact_surface, original.prm, parameters.prm, run.json and
+ * checkpoint.bin (an earlier run's checkpoint must not be resumed into a new run's results).
  */
 bool is_result_file(const std::string& file_name);
 
