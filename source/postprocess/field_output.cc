@@ -197,8 +197,7 @@ void FieldOutput<dim>::write_contact_surface(const unsigned int frame,
             cell->face(f)->get_dof_indices(face_dofs);
             if (std::all_of(face_dofs.begin(),
                             face_dofs.end(),
-                            [&](const types::global_dof_index dof)
-                            {
+                            [&](const types::global_dof_index dof) {
                               return scalar_dof[dof] == numbers::invalid_dof_index ||
                                      has_pair[scalar_dof[dof]];
                             }))

@@ -35,7 +35,7 @@ TEST(ThreeBodies, SymmetricDoubleImpactKeepsTheMiddleSphereAtRestAndConservesMom
             << imbalance / peak << " of the peak, velocity jump " << velocity_jump << ", rebound "
             << rebound / momentum_1 << "\n";
   // Both pairs are enforced in one saddle-point system and corrected jointly: total momentum is
-  // conserved to round-off (measured 3.5e-13), forces balance (4e-13 of the peak) and the rate
+  // conserved to round-off (measured 2.5e-13), forces balance (4e-13 of the peak) and the rate
   // constraints hold (8e-13, impact speed 1).
   EXPECT_LT(total, 1e-10 * momentum_1);
   EXPECT_LT(imbalance, 1e-10 * peak);
