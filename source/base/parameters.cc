@@ -1125,13 +1125,16 @@ void OutputParameters::parse_parameters(ParameterHandler& prm)
   directory = prm.get("directory");
   if (directory.empty())
     throw InputError("Output/directory is empty; give a directory name.");
-  profile_times.clear();
-  for (const auto& time : Utilities::split_string_list(prm.get("profile times")))
-    profile_times.push_back(Utilities::string_to_double(time));
-  vtu_interval = prm.get_integer("vtu interval");
-  vtu_times.clear();
-  for (const auto& time : Utilities::split_string_list(prm.get("vtu times")))
-    vtu_times.push_back(Utilities::string_to_double(time));
+  const auto times = [&prm](const std::string& entry)
+  {
+    std::vector<double> values;
+    for (const auto& time : Utilities::split_string_list(prm.get(entry)))
+      values.push_back(Utilities::string_to_double(time));
+    return values;
+  };
+  profile_times      = times("profile times");
+  vtu_interval       = prm.get_integer("vtu interval");
+  vtu_times          = times("vtu times");
   vtu_during_contact = prm.get_bool("vtu during contact");
   checkpoint_interval =
       static_cast<unsigned int>(get_in_range(prm, "checkpoint interval", "Output", 0., 1e8));
@@ -1305,24 +1308,15 @@ void ParameterReader::print_template(std::ostream& out, const std::string& kind)
                          mesh ? 1u : 0u};
   ParameterHandler prm;
   declare_all(prm, size);
-  const auto set = [&prm](const std::vector<std::string>& path, const std::string& value)
-  {
-    for (unsigned int i = 0; i + 1 < path.size(); ++i)
-      prm.enter_subsection(path[i]);
-    prm.set(path.back(), value);
-    for (unsigned int i = 0; i + 1 < path.size(); ++i)
-      prm.leave_subsection();
-  };
-  set({"Problem", "geometry"}, geometry_names().name(size.geometry));
+  apply_override(prm, "Problem/geometry=" + geometry_names().name(size.geometry), false);
   if (mesh)
-  {
     // meshes/two_spheres.geo: physical surfaces 1, 2 are the spheres, curves 2, 3 their surfaces.
-    set({"Mesh", "file"}, std::string(DYNCONTACT_MESH_DIRECTORY) + "/two_spheres.geo");
-    set({"Bodies", "number of bodies"}, "2");
-    set({"Contact", "number of pairs"}, "1");
-    set({"Contact", "Pair 1", "slave boundary"}, "2");
-    set({"Contact", "Pair 1", "master boundary"}, "3");
-  }
+    for (const char* text : {"Mesh/file=" DYNCONTACT_MESH_DIRECTORY "/two_spheres.geo",
+                             "Bodies/number of bodies=2",
+                             "Contact/number of pairs=1",
+                             "Contact/Pair 1/slave boundary=2",
+                             "Contact/Pair 1/master boundary=3"})
+      apply_override(prm, text, false);
   out << "# A dyncontact parameter file for " << (mesh ? "axisymmetric mesh" : "bars")
       << " problems, printed by dyncontact --print-parameters " << kind
       << ": every entry with its default.\n# It runs as it is; edit the values. "

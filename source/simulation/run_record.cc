@@ -101,8 +101,7 @@ RunRecord::RunRecord(std::string directory,
       parameter_file(std::filesystem::absolute(parameter_file).lexically_normal().string()),
       n_ranks(n_ranks), started(now_utc()), start_time(std::chrono::steady_clock::now())
 {
-  write();
-  if (!std::ifstream(this->directory + "/run.json"))
+  if (!write())
     throw InputError("Output/directory = '" + this->directory + "': cannot write run.json.");
 }
 
@@ -121,7 +120,7 @@ void RunRecord::finish(const RunOutcome& run_outcome)
   write();
 }
 
-void RunRecord::write() const
+bool RunRecord::write() const
 {
   std::ofstream file(directory + "/run.json");
   file << "{\n  \"program\": \"dyncontact\",\n  \"version\": " << quoted(version())
@@ -145,5 +144,6 @@ void RunRecord::write() const
        << ",\n  \"message\": " << quoted(has_outcome ? outcome.message : "")
        << ",\n  \"exit_code\": " << (has_outcome ? std::to_string(outcome.exit_code) : "null")
        << "\n}\n";
+  return static_cast<bool>(file);
 }
 } // namespace dyncontact

@@ -99,17 +99,18 @@ void Simulation<dim>::build_contact_and_solver()
 {
   const PenaltySizingInput sizing{
       mass, integrator.time_step(), model->highest_frequency() * integrator.time_step()};
-  Contact<dim> built = create_contact(model->contact_description(*nodes),
-                                      dof_handler,
-                                      *kinematics,
-                                      *nodes,
-                                      parameters.contact,
-                                      sizing);
-  surface_contact    = std::move(built.surfaces);
-  contact            = std::move(built.constraints);
-  penalty_factor     = built.penalty_factor;
-  penalty_lowered    = built.penalty_lowered_to_resolve_springs;
-  contact_dynamics   = create_contact_dynamics<dim>(parameters.contact.dynamics);
+  const ContactDescription<dim> description = model->contact_description(*nodes);
+  for (const auto& pair : description.surface_pairs)
+    slave_surfaces.insert(pair.surface_a);
+  for (const auto& pair : description.plane_pairs)
+    slave_surfaces.insert(pair.surface);
+  Contact<dim> built =
+      create_contact(description, dof_handler, *kinematics, *nodes, parameters.contact, sizing);
+  surface_contact  = std::move(built.surfaces);
+  contact          = std::move(built.constraints);
+  penalty_factor   = built.penalty_factor;
+  penalty_lowered  = built.penalty_lowered_to_resolve_springs;
+  contact_dynamics = create_contact_dynamics<dim>(parameters.contact.dynamics);
   // Mass redistribution: the contact nodes lose their mass only now, after the penalty sizing,
   // which weighs a pair's spring by its nodes' masses.
   if (contact_dynamics->contact_nodes_massless())
@@ -612,7 +613,11 @@ void Simulation<dim>::record_step(const Measures& measures,
       (on_nominal_grid && ((output.vtu_interval > 0 && step % output.vtu_interval == 0) ||
                            vtu_steps.count(step) > 0)) ||
       (vtu_on && output.vtu_during_contact && contact->n_active() > 0);
+  const bool profile = on_nominal_grid && profile_steps.count(step) > 0 && is_root_rank;
   TimerOutput::Scope scope(timer, "output");
+  const auto samples = surface_contact && (vtu_frame || profile)
+                           ? pressure_samples(pressures)
+                           : std::vector<typename FieldOutput<dim>::PressureSample>();
   if (vtu_frame)
   {
     const Vector<double> traction =
@@ -620,15 +625,13 @@ void Simulation<dim>::record_step(const Measures& measures,
     field_output->write_fields(
         frame, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
     if (surface_contact)
-      field_output->write_contact_surface(frame, time, displacement, pressure_samples(pressures));
+      field_output->write_contact_surface(frame, time, displacement, samples);
   }
-  if (!on_nominal_grid)
-    return; // profiles on the nominal grid only
-  if (profile_steps.count(step) > 0 && is_root_rank)
+  if (profile) // on the nominal grid only
   {
     field_output->write_profile(time, nodes->nodes(), displacement, velocity, acceleration);
     if (surface_contact)
-      field_output->write_contact_pressure(time, pressure_samples(pressures));
+      field_output->write_contact_pressure(time, samples);
   }
 }
 
@@ -768,12 +771,6 @@ void Simulation<dim>::start(const std::string& resume_directory)
 {
   prepare();
   const std::string& directory = parameters.output.directory;
-  std::set<types::boundary_id> slave_surfaces;
-  const ContactDescription<dim> description = model->contact_description(*nodes);
-  for (const auto& pair : description.surface_pairs)
-    slave_surfaces.insert(pair.surface_a);
-  for (const auto& pair : description.plane_pairs)
-    slave_surfaces.insert(pair.surface);
   std::vector<std::shared_ptr<const Material>> materials;
   for (const BodyMaterial& body : model->body_materials())
     materials.push_back(body.material);

@@ -52,7 +52,8 @@ public:
   void finish(const RunOutcome& outcome);
 
 private:
-  void write() const;
+  /** Writes run.json; false if it could not be written. */
+  bool write() const;
 
   std::string directory;
   std::vector<std::string> command_line;

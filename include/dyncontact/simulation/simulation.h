@@ -258,6 +258,8 @@ private:
   std::unique_ptr<FieldOutput<dim>> field_output;
   std::set<unsigned int> profile_steps; ///< steps at which a profile is written
   std::set<unsigned int> vtu_steps;     ///< nominal steps of Output/vtu times
+  /// boundary ids of the slave contact surfaces (surface pairs and rigid planes), for the output
+  std::set<types::boundary_id> slave_surfaces;
   double penalty_factor =
       0.; ///< the factor in force (Contact/penalty factor, or the automatic one)
   bool penalty_lowered = false; ///< Contact/penalty factor = auto lowered the springs
