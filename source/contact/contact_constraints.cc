@@ -38,6 +38,13 @@ void ContactConstraints<dim>::scale_penalty_stiffness(const double factor)
 }
 
 template <int dim>
+void ContactConstraints<dim>::set_force_per_multiplier(const double factor)
+{
+  AssertThrow(factor > 0., ExcMessage("The force per multiplier must be positive."));
+  force_per_multiplier = factor;
+}
+
+template <int dim>
 unsigned int ContactConstraints<dim>::n_active() const
 {
   return std::count(active.begin(), active.end(), true);
@@ -174,8 +181,9 @@ void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& dis
     constraint_residual[k] = -constraint_gap(k, displacement);
     if (formulation == ContactFormulation::penalty)
     {
-      add(row, row, -1. / pairs[k].penalty_stiffness);
-      constraint_residual[k] -= multiplier_values[k] / pairs[k].penalty_stiffness;
+      add(row, row, -force_per_multiplier / pairs[k].penalty_stiffness);
+      constraint_residual[k] -=
+          force_per_multiplier * multiplier_values[k] / pairs[k].penalty_stiffness;
     }
   }
 }
@@ -293,20 +301,18 @@ ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) c
 {
   if (geometry == nullptr)
     return {};
-  std::vector<double> active_multipliers(pairs.size(), 0.);
+  std::vector<double> forces(pairs.size(), 0.);
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k])
-      active_multipliers[k] = multiplier_values[k];
-  return geometry->contact_pressures(displacement, active_multipliers);
+    forces[k] = pair_force(k);
+  return geometry->contact_pressures(displacement, forces);
 }
 
 template <int dim>
-double ContactConstraints<dim>::total_multiplier() const
+double ContactConstraints<dim>::total_pair_force() const
 {
   double total = 0.;
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k])
-      total += multiplier_values[k];
+    total += pair_force(k);
   return total;
 }
 

@@ -8,6 +8,7 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
 
@@ -182,13 +183,58 @@ ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
 }
 
 template <int dim>
+std::vector<double> ElasticBodies<dim>::cell_lumped_mass(const FEValues<dim>& fe_values,
+                                                         const types::material_id body,
+                                                         const std::vector<bool>& massless) const
+{
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  const unsigned int n_local   = fe.n_dofs_per_cell();
+  const double density         = bodies[body].density;
+  double cell_mass             = 0.;
+  std::vector<double> consistent_diagonal(n_local, 0.);
+  for (unsigned int q = 0; q < fe_values.n_quadrature_points; ++q)
+  {
+    const double weight =
+        density * fe_values.JxW(q) * kinematics.measure_factor(fe_values.quadrature_point(q), body);
+    cell_mass += weight;
+    for (unsigned int i = 0; i < n_local; ++i)
+      consistent_diagonal[i] += weight * std::pow(fe_values.shape_value(i, q), 2);
+  }
+  // Every component carries the whole cell mass: scale its diagonal entries to sum to it.
+  std::vector<double> diagonal_sum(fe.n_components(), 0.);
+  for (unsigned int i = 0; i < n_local; ++i)
+    diagonal_sum[fe.system_to_component_index(i).first] += consistent_diagonal[i];
+  // Mass redistribution: the massless DoFs' share goes to the others of the same component.
+  std::vector<double> lumped(n_local);
+  std::vector<double> moved(fe.n_components(), 0.), kept(fe.n_components(), 0.);
+  for (unsigned int i = 0; i < n_local; ++i)
+  {
+    const unsigned int component = fe.system_to_component_index(i).first;
+    lumped[i]                    = consistent_diagonal[i] * cell_mass / diagonal_sum[component];
+    (massless[i] ? moved : kept)[component] += lumped[i];
+  }
+  for (unsigned int component = 0; component < fe.n_components(); ++component)
+    if (moved[component] > 0. && kept[component] == 0.)
+      throw InputError("Contact/dynamics = mass-redistribution: a cell of body " +
+                       std::to_string(body + 1) +
+                       " has all its nodes on the contact surfaces, so its mass has nowhere to "
+                       "go; refine the mesh (bars: at least 2 elements).");
+  for (unsigned int i = 0; i < n_local; ++i)
+  {
+    const unsigned int component = fe.system_to_component_index(i).first;
+    lumped[i]                    = massless[i] ? 0.
+                                   : moved[component] > 0. ? lumped[i] * (1. + moved[component] / kept[component])
+                                                           : lumped[i];
+  }
+  return lumped;
+}
+
+template <int dim>
 Vector<double> ElasticBodies<dim>::lumped_mass(const std::vector<bool>& massless_dofs) const
 {
   AssertThrow(massless_dofs.empty() || massless_dofs.size() == dof_handler.n_dofs(),
               ExcMessage("ElasticBodies::lumped_mass: massless_dofs must be empty or have n_dofs "
                          "entries"));
-  const auto is_massless = [&](const types::global_dof_index dof)
-  { return !massless_dofs.empty() && massless_dofs[dof]; };
   const FiniteElement<dim>& fe = dof_handler.get_fe();
   // Exact for rho phi_i^2 times the (at most linear) measure factor on affine cells.
   const QGauss<dim> quadrature(fe.degree + 2);
@@ -197,55 +243,77 @@ Vector<double> ElasticBodies<dim>::lumped_mass(const std::vector<bool>& massless
   const unsigned int n_local = fe.n_dofs_per_cell();
   Vector<double> mass(dof_handler.n_dofs());
   std::vector<types::global_dof_index> local_dofs(n_local);
-  std::vector<double> consistent_diagonal(n_local);
-  std::vector<double> cell_lumped(n_local);
+  std::vector<bool> local_massless(n_local);
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
     if (!cell->is_locally_owned())
       continue;
     fe_values.reinit(cell);
     cell->get_dof_indices(local_dofs);
-    const double density = bodies[cell->material_id()].density;
-    double cell_mass     = 0.;
-    std::fill(consistent_diagonal.begin(), consistent_diagonal.end(), 0.);
-    for (unsigned int q = 0; q < quadrature.size(); ++q)
-    {
-      const double weight =
-          density * fe_values.JxW(q) *
-          kinematics.measure_factor(fe_values.quadrature_point(q), cell->material_id());
-      cell_mass += weight;
-      for (unsigned int i = 0; i < n_local; ++i)
-        consistent_diagonal[i] += weight * std::pow(fe_values.shape_value(i, q), 2);
-    }
-    // Every component carries the whole cell mass: scale its diagonal entries to sum to it.
-    std::vector<double> diagonal_sum(fe.n_components(), 0.);
     for (unsigned int i = 0; i < n_local; ++i)
-      diagonal_sum[fe.system_to_component_index(i).first] += consistent_diagonal[i];
-    // Mass redistribution: the massless DoFs' share goes to the others of the same component.
-    std::vector<double> moved(fe.n_components(), 0.), kept(fe.n_components(), 0.);
+      local_massless[i] = !massless_dofs.empty() && massless_dofs[local_dofs[i]];
+    const std::vector<double> lumped =
+        cell_lumped_mass(fe_values, cell->material_id(), local_massless);
     for (unsigned int i = 0; i < n_local; ++i)
-    {
-      const unsigned int component = fe.system_to_component_index(i).first;
-      cell_lumped[i]               = consistent_diagonal[i] * cell_mass / diagonal_sum[component];
-      (is_massless(local_dofs[i]) ? moved : kept)[component] += cell_lumped[i];
-    }
-    for (unsigned int component = 0; component < fe.n_components(); ++component)
-      if (moved[component] > 0. && kept[component] == 0.)
-        throw InputError("Contact/dynamics = mass-redistribution: a cell of body " +
-                         std::to_string(cell->material_id() + 1) +
-                         " has all its nodes on the contact surfaces, so its mass has nowhere to "
-                         "go; refine the mesh (bars: at least 2 elements).");
-    for (unsigned int i = 0; i < n_local; ++i)
-    {
-      const unsigned int component = fe.system_to_component_index(i).first;
-      if (!is_massless(local_dofs[i]))
-        mass[local_dofs[i]] += moved[component] > 0.
-                                   ? cell_lumped[i] * (1. + moved[component] / kept[component])
-                                   : cell_lumped[i];
-    }
+      mass[local_dofs[i]] += lumped[i];
   }
   sum_over_ranks(mass, dof_handler.get_triangulation().get_communicator());
   return mass;
+}
+
+template <int dim>
+double ElasticBodies<dim>::highest_frequency_bound(const std::vector<bool>& fixed_dofs,
+                                                   const std::vector<bool>& massless_dofs) const
+{
+  AssertDimension(fixed_dofs.size(), dof_handler.n_dofs());
+  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  const QGauss<dim> quadrature(fe.degree + 2); // the masses of lumped_mass()
+  FEValues<dim> fe_values(
+      mapping, fe, quadrature, update_values | update_quadrature_points | update_JxW_values);
+  const unsigned int n_local = fe.n_dofs_per_cell();
+  std::vector<bool> local_massless(n_local);
+  CellContribution stiffness(n_local);
+  double largest_eigenvalue = 0.;
+  auto data                 = cells.cbegin(); // the locally owned cells, in this order
+  for (const auto& cell : dof_handler.active_cell_iterators())
+  {
+    if (!cell->is_locally_owned())
+      continue;
+    fe_values.reinit(cell);
+    for (unsigned int i = 0; i < n_local; ++i)
+      local_massless[i] = !massless_dofs.empty() && massless_dofs[data->dofs[i]];
+    const std::vector<double> lumped =
+        cell_lumped_mass(fe_values, cell->material_id(), local_massless);
+    // K_e at u = 0, from the cell's reference data.
+    stiffness.tangent        = 0.;
+    const Material& material = *bodies[data->body].material;
+    for (unsigned int q = 0; q < data->volumes.size(); ++q)
+    {
+      const Tensor<2, 3> F =
+          kinematics.deformation_gradient(Tensor<2, dim>(), Tensor<1, dim>(), data->points[q]);
+      add_point_contribution(
+          material, &data->variations[q * n_local], n_local, F, data->volumes[q], true, stiffness);
+    }
+    // lambda_max of M_e^{-1/2} K_e M_e^{-1/2} on the free DoFs.
+    std::vector<unsigned int> free;
+    for (unsigned int i = 0; i < n_local; ++i)
+      if (!fixed_dofs[data->dofs[i]] && lumped[i] > 0.)
+        free.push_back(i);
+    Eigen::MatrixXd scaled(free.size(), free.size());
+    for (unsigned int a = 0; a < free.size(); ++a)
+      for (unsigned int b = 0; b < free.size(); ++b)
+        scaled(a, b) =
+            stiffness.tangent(free[a], free[b]) / std::sqrt(lumped[free[a]] * lumped[free[b]]);
+    if (!free.empty())
+      largest_eigenvalue =
+          std::max(largest_eigenvalue,
+                   Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(scaled, Eigen::EigenvaluesOnly)
+                       .eigenvalues()
+                       .maxCoeff());
+    ++data;
+  }
+  return std::sqrt(
+      Utilities::MPI::max(largest_eigenvalue, dof_handler.get_triangulation().get_communicator()));
 }
 
 template <int dim>

@@ -98,14 +98,6 @@ double AxisymmetricMeshModel::dilatational_wave_speed(const unsigned int body) c
   return std::sqrt(constrained_modulus / parameters.density);
 }
 
-double AxisymmetricMeshModel::highest_frequency() const
-{
-  double speed = 0.;
-  for (unsigned int body = 0; body < n_bodies(); ++body)
-    speed = std::max(speed, dilatational_wave_speed(body));
-  return 2. * std::sqrt(6.) * speed / shortest_edge;
-}
-
 std::vector<BodyMaterial> AxisymmetricMeshModel::body_materials() const
 {
   std::vector<BodyMaterial> materials;
@@ -394,6 +386,7 @@ void AxisymmetricMeshModel::write_reference(const std::string& directory,
 
 void AxisymmetricMeshModel::summarize_run(const std::string& directory,
                                           const History& history,
+                                          const std::vector<double>& contact_impulses,
                                           std::ostream& log) const
 {
   const auto hertz = hertz_reference();
@@ -427,7 +420,8 @@ void AxisymmetricMeshModel::summarize_run(const std::string& directory,
        t0 + hertz->contact_duration(),
        law ? t0 + law_duration : nan},
       {"duration", fe.duration, hertz->contact_duration(), law ? law_duration : nan},
-      {"impulse", fe.impulse, hertz->impulse(), law ? law->impulse() : nan},
+      // Body 1 moves along +z into the contact, which pushes it back.
+      {"impulse", -contact_impulses[0], hertz->impulse(), law ? law->impulse() : nan},
       {"ringing", fe.ringing, 0., law ? 0. : nan}};
   const auto relative = [](const double computed, const double reference)
   { return reference != 0. ? (computed - reference) / reference : 0.; };
@@ -468,7 +462,9 @@ void AxisymmetricMeshModel::print_summary(std::ostream& out, const double time_s
       out << ", sphere R = " << sphere->radius << " centred at z = " << sphere->centre[1];
     out << "\n";
   }
-  out << "  Courant number c_p dt / h_min = "
-      << highest_frequency() * time_step / (2. * std::sqrt(6.)) << "\n";
+  double speed = 0.;
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+    speed = std::max(speed, dilatational_wave_speed(body));
+  out << "  Courant number c_p dt / h_min = " << speed * time_step / shortest_edge << "\n";
 }
 } // namespace dyncontact

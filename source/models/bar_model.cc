@@ -189,12 +189,18 @@ void BarModel::write_reference(const std::string& directory,
   }
 }
 
-double BarModel::highest_frequency() const
+double BarModel::total_contact_impulse(const std::vector<double>& contact_impulses) const
 {
-  double frequency = 0.;
-  for (const auto& bar : geometry.bars)
-    frequency = std::max(frequency, 2. * bar.wave_speed() / bar.element_length());
-  return frequency;
+  AssertDimension(contact_impulses.size(), geometry.bars.size());
+  const std::vector<unsigned int> order = bars_in_x_order();
+  double left_of_interface = 0., total = 0.;
+  for (unsigned int k = 0; k < order.size(); ++k)
+  {
+    left_of_interface += contact_impulses[order[k]];
+    if (k + 1 < order.size() || geometry.wall_enabled)
+      total -= left_of_interface;
+  }
+  return total;
 }
 
 ExactBarSolution BarModel::exact_solution(const double end_time) const
@@ -229,6 +235,7 @@ void BarModel::print_summary(std::ostream& out, const double time_step) const
 }
 void BarModel::summarize_run(const std::string& directory,
                              const History& history,
+                             const std::vector<double>& contact_impulses,
                              std::ostream& log) const
 {
   if (history.n_rows() < 3)
@@ -253,7 +260,7 @@ void BarModel::summarize_run(const std::string& directory,
   std::vector<Row> rows = {{"contact_start", fe.contact_start, ex.contact_start},
                            {"contact_end", fe.contact_end, ex.contact_end},
                            {"duration", fe.duration, ex.duration},
-                           {"impulse", fe.impulse, ex.impulse},
+                           {"impulse", total_contact_impulse(contact_impulses), ex.impulse},
                            {"peak_force", fe.peak_force, ex.peak_force},
                            {"ringing", fe.ringing, ex.ringing}};
   const double t_end    = times.back();

@@ -22,7 +22,10 @@ void ProblemModel<dim>::write_reference(const std::string&,
 }
 
 template <int dim>
-void ProblemModel<dim>::summarize_run(const std::string&, const History&, std::ostream&) const
+void ProblemModel<dim>::summarize_run(const std::string&,
+                                      const History&,
+                                      const std::vector<double>&,
+                                      std::ostream&) const
 {
 }
 

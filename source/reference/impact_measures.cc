@@ -11,7 +11,7 @@ namespace dyncontact
 {
 namespace
 {
-/// Allowed relative deviation of each time step from the mean step.
+/// Two steps of a ringing window are equal when they differ by at most this fraction of a step.
 constexpr double relative_step_tolerance = 1e-9;
 
 [[noreturn]] void fail(const std::string& message)
@@ -19,40 +19,42 @@ constexpr double relative_step_tolerance = 1e-9;
   throw std::invalid_argument("measure_impact: " + message);
 }
 
-/**
- * Check the history as documented for measure_impact() and return the mean time step, which equals
- * every step to within the tolerance.
- */
-double checked_time_step(const std::vector<double>& times, const std::vector<double>& force)
+/** Checks the history as documented for measure_impact(). */
+void check_history(const std::vector<double>& times, const std::vector<double>& force)
 {
   if (times.size() != force.size())
     fail("the times and forces differ in number (" + std::to_string(times.size()) + " and " +
          std::to_string(force.size()) + ")");
   if (times.size() < 3)
     fail("at least 3 samples are needed, got " + std::to_string(times.size()));
-  double largest_time_magnitude = 0.0;
   for (std::size_t n = 0; n < times.size(); ++n)
   {
     if (!std::isfinite(times[n]))
       fail("time " + std::to_string(n) + " is not finite");
     if (!std::isfinite(force[n]))
       fail("force " + std::to_string(n) + " is not finite");
-    largest_time_magnitude = std::max(largest_time_magnitude, std::abs(times[n]));
   }
   for (std::size_t n = 0; n + 1 < times.size(); ++n)
     if (!(times[n + 1] > times[n]))
       fail("the times must increase strictly, but time " + std::to_string(n + 1) +
            " does not exceed time " + std::to_string(n));
+}
 
-  const double step = (times.back() - times.front()) / static_cast<double>(times.size() - 1);
-  // A difference of two stored times carries up to about two ulps of the larger one.
-  const double tolerance = relative_step_tolerance * step +
-                           4.0 * std::numeric_limits<double>::epsilon() * largest_time_magnitude;
-  for (std::size_t n = 0; n + 1 < times.size(); ++n)
-    if (std::abs(times[n + 1] - times[n] - step) > tolerance)
-      fail("the time step must be uniform, but step " + std::to_string(n) + " differs from the " +
-           "mean step by more than 1e-9 of it");
-  return step;
+/**
+ * Whether the four steps of the window of samples n - 2 .. n + 2 are equal: to 1e-9 of a step
+ * plus the round-off of the stored times (a difference of two times carries up to about two ulps
+ * of the larger one).
+ */
+bool uniform_window(const std::vector<double>& times, const std::size_t n)
+{
+  const double step = times[n - 1] - times[n - 2];
+  const double tolerance =
+      relative_step_tolerance * step + 4.0 * std::numeric_limits<double>::epsilon() *
+                                           std::max(std::abs(times[n - 2]), std::abs(times[n + 2]));
+  for (std::size_t k = n - 1; k < n + 2; ++k)
+    if (std::abs(times[k + 1] - times[k] - step) > tolerance)
+      return false;
+  return true;
 }
 
 /**
@@ -77,7 +79,7 @@ double extrapolated_contact_limit(const double t_boundary,
 
 ImpactMeasures measure_impact(const std::vector<double>& times, const std::vector<double>& force)
 {
-  const double step           = checked_time_step(times, force);
+  check_history(times, force);
   const std::size_t n_samples = times.size();
 
   std::vector<std::size_t> positive_samples;
@@ -116,34 +118,41 @@ ImpactMeasures measure_impact(const std::vector<double>& times, const std::vecto
   }
   measures.duration = measures.contact_end - measures.contact_start;
 
-  // Peak: the vertex of the parabola F + b s + c s^2 (s in steps from the largest sample) through
-  // the largest sample and its neighbours, if it is concave.
+  // Peak: the vertex of the parabola through the largest sample and its neighbours, if it is
+  // concave: F0 + b s + c s^2 in s = t - t0, from the divided differences of the two steps
+  // h1 = t0 - t_before and h2 = t_after - t0 (for h1 = h2 = dt: b = (F+ - F-) / (2 dt),
+  // c = (F+ - 2 F0 + F-) / (2 dt^2)).
   const std::size_t largest =
       static_cast<std::size_t>(std::max_element(force.begin(), force.end()) - force.begin());
   measures.peak_force = force[largest];
   measures.peak_time  = times[largest];
   if (largest > 0 && largest + 1 < n_samples)
   {
-    const double b = 0.5 * (force[largest + 1] - force[largest - 1]);
-    const double c = 0.5 * (force[largest + 1] - 2.0 * force[largest] + force[largest - 1]);
+    const double h1          = times[largest] - times[largest - 1];
+    const double h2          = times[largest + 1] - times[largest];
+    const double slope_left  = (force[largest] - force[largest - 1]) / h1;
+    const double slope_right = (force[largest + 1] - force[largest]) / h2;
+    const double b           = (slope_left * h2 + slope_right * h1) / (h1 + h2);
+    const double c           = (slope_right - slope_left) / (h1 + h2);
     if (c < 0.0)
     {
       measures.peak_force = force[largest] - b * b / (4.0 * c);
-      measures.peak_time  = times[largest] - b / (2.0 * c) * step;
+      measures.peak_time  = times[largest] - b / (2.0 * c);
     }
   }
 
-  // Impulse: trapezoidal rule over all samples.
-  double force_sum = 0.5 * (force.front() + force.back());
-  for (std::size_t n = 1; n + 1 < n_samples; ++n)
-    force_sum += force[n];
-  measures.impulse = step * force_sum;
+  // Impulse: trapezoidal rule over all samples, each step with its own size.
+  for (std::size_t n = 0; n + 1 < n_samples; ++n)
+    measures.impulse += 0.5 * (times[n + 1] - times[n]) * (force[n] + force[n + 1]);
 
-  // Ringing: RMS of the period-2 component (4th difference / 16) over the windows in contact.
+  // Ringing: RMS of the period-2 component (4th difference / 16) over the uniform windows in
+  // contact.
   double sum_of_squares = 0.0;
   std::size_t n_windows = 0;
   for (std::size_t n = first + 2; n + 2 <= last; ++n)
   {
+    if (!uniform_window(times, n))
+      continue;
     const double period_2_component =
         (force[n - 2] - 4.0 * force[n - 1] + 6.0 * force[n] - 4.0 * force[n + 1] + force[n + 2]) /
         16.0;

@@ -35,8 +35,8 @@ Simulation<dim>::Simulation(const RunParameters& parameters,
       is_root_rank(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0), log(log, is_root_rank),
       integrator(parameters.time), triangulation(MPI_COMM_WORLD),
       fe(FE_Q<dim>(this->model->element_degree()), dim), mapping(this->model->element_degree()),
-      n_steps(0), time(0.), guards(parameters.guards), step_history(history_columns()),
-      timer(this->log, TimerOutput::never, TimerOutput::wall_times)
+      n_steps(0), time(0.), guards(parameters.guards, std::isfinite(integrator.stability_limit())),
+      step_history(history_columns()), timer(this->log, TimerOutput::never, TimerOutput::wall_times)
 {
 }
 
@@ -92,13 +92,17 @@ void Simulation<dim>::build_discretization()
   fixed_dofs = model->fixed_dofs(*nodes);
   loads      = std::make_unique<SurfaceTractions<dim>>(
       dof_handler, mapping, *kinematics, model->surface_tractions());
+  std::vector<bool> fixed(dof_handler.n_dofs(), false);
+  for (const auto dof : fixed_dofs)
+    fixed[dof] = true;
+  highest_frequency = bodies->highest_frequency_bound(fixed);
 }
 
 template <int dim>
 void Simulation<dim>::build_contact_and_solver()
 {
   const PenaltySizingInput sizing{
-      mass, integrator.time_step(), model->highest_frequency() * integrator.time_step()};
+      mass, integrator.time_step(), highest_frequency * integrator.time_step()};
   const ContactDescription<dim> description = model->contact_description(*nodes);
   for (const auto& pair : description.surface_pairs)
     slave_surfaces.insert(pair.surface_a);
@@ -111,6 +115,10 @@ void Simulation<dim>::build_contact_and_solver()
   penalty_factor   = built.penalty_factor;
   penalty_lowered  = built.penalty_lowered_to_resolve_springs;
   contact_dynamics = create_contact_dynamics<dim>(parameters.contact.dynamics);
+  // The multipliers as the contact force of the balance the step solves, on every integrator and
+  // treatment (doc/method.md, "Contact forces on every integrator").
+  contact->set_force_per_multiplier(contact_dynamics->contact_force_factor(integrator.rate_map()) *
+                                    (1. - integrator.alpha_f()));
   // Mass redistribution: the contact nodes lose their mass only now, after the penalty sizing,
   // which weighs a pair's spring by its nodes' masses.
   if (contact_dynamics->contact_nodes_massless())
@@ -191,24 +199,39 @@ void Simulation<dim>::schedule_and_log()
         << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
   if (is_root_rank)
     model->print_summary(log.get_stream(), dt);
+  log << "  highest mode (element eigenvalue bound): omega_max dt = " << highest_frequency * dt;
+  if (std::isfinite(integrator.stability_limit()))
+    log << ", stability limit " << integrator.stability_limit();
+  log << "\n";
   if (parameters.contact.formulation == ContactFormulation::penalty &&
       parameters.contact.automatic_penalty)
     log << "  penalty factor (auto): " << penalty_factor
         << ", stiffest contact spring omega dt = " << penalty_spring_omega_dt(*contact, mass, dt)
-        << ", bodies' highest mode omega dt = " << model->highest_frequency() * dt << "\n";
+        << ", bodies' highest mode omega dt = " << highest_frequency * dt << "\n";
 }
 
 namespace
 {
-/// Slack of the stability checks, relative: a time step they suggest is printed to 6 significant
-/// digits and may round up by 5e-7; taken as given, it must pass.
-constexpr double suggestion_rounding = 1e-6;
+/**
+ * A largest admissible time step as printed in a message: 6 significant digits rounded down, so
+ * that the printed step itself passes the check that suggested it (rounded to nearest, 0.100201
+ * for the limit 0.1002006 was refused).
+ */
+std::string format_largest_step(const double step)
+{
+  const double scale = std::pow(10., 5 - std::floor(std::log10(step)));
+  return format_number(std::floor(step * scale) / scale);
+}
+
+/// Relative slack of the stability checks: the round-off of omega dt recomputed from a step that
+/// was printed at the limit, nothing more.
+constexpr double round_off_slack = 1e-12;
 } // namespace
 
 template <int dim>
 void Simulation<dim>::check_stability() const
 {
-  const double body_omega_dt   = model->highest_frequency() * integrator.time_step();
+  const double body_omega_dt   = highest_frequency * integrator.time_step();
   const double spring_omega_dt = penalty_spring_omega_dt(*contact, mass, integrator.time_step());
   // A resolved mesh (omega dt <= 2, Courant number about 1) with an unresolved penalty spring: the
   // spring is the one frequency the step cannot follow, and the contact node chatters (see
@@ -236,25 +259,26 @@ void Simulation<dim>::check_stability() const
         " has omega dt = " + format_number(omega_dt) + ", above the stability limit " +
         format_number(limit) + " of Newmark with beta = " + format_number(integrator.beta()) +
         ", gamma = " + format_number(integrator.gamma()) +
-        "; use a time step <= " + format_number(integrator.time_step() * limit / omega_dt) +
+        "; use a time step <= " + format_largest_step(integrator.time_step() * limit / omega_dt) +
         ", 2 beta >= gamma" + remedy + ".");
   };
   // The automatic penalty keeps its springs at omega dt = 1; a softer spring would buy stability
   // with a penetration growing as 1 / (omega dt)^2, so such a time step is refused instead.
   if (penalty_lowered &&
-      body_omega_dt * body_omega_dt + 1. > limit * limit * (1. + 2. * suggestion_rounding))
+      body_omega_dt * body_omega_dt + 1. > limit * limit * (1. + 2. * round_off_slack))
     throw InputError(
         "Contact/penalty factor = auto: with Time integration/beta = " +
         format_number(integrator.beta()) +
         " < gamma/2 the mesh's highest mode (omega dt = " + format_number(body_omega_dt) +
         ") leaves a penalty spring of omega dt = 1 no room below the stability limit " +
         format_number(limit) + "; use a time step <= " +
-        format_number(integrator.time_step() * std::sqrt(limit * limit - 1.) / body_omega_dt) +
+        format_largest_step(integrator.time_step() * std::sqrt(limit * limit - 1.) /
+                            body_omega_dt) +
         ", beta >= gamma/2, or Lagrange multipliers.");
-  if (body_omega_dt > limit * (1. + suggestion_rounding))
+  if (body_omega_dt > limit * (1. + round_off_slack))
     reject("the mesh's highest mode", body_omega_dt, "");
   const double coupled_omega_dt = std::hypot(body_omega_dt, spring_omega_dt);
-  if (spring_omega_dt > 0. && coupled_omega_dt > limit * (1. + suggestion_rounding))
+  if (spring_omega_dt > 0. && coupled_omega_dt > limit * (1. + round_off_slack))
     reject("the mesh with the penalty spring (Contact/penalty factor)",
            coupled_omega_dt,
            " or a smaller penalty factor");
@@ -283,6 +307,7 @@ void Simulation<dim>::set_initial_conditions()
   contact->update_geometry(displacement);
   forces_on_bodies = body_forces();
   impulses.assign(model->n_bodies(), 0.);
+  contact_impulses.assign(model->n_bodies(), 0.);
   external_work = 0.;
 }
 
@@ -298,6 +323,7 @@ typename Simulation<dim>::State Simulation<dim>::current_state() const
           solver->tangent_scale(),
           forces_on_bodies,
           impulses,
+          contact_impulses,
           external_work};
 }
 
@@ -311,8 +337,9 @@ void Simulation<dim>::restore(const State& state)
   external_force   = state.external_force;
   forces_on_bodies = state.body_forces;
   solver->set_tangent_scale(state.tangent_scale);
-  impulses      = state.impulses;
-  external_work = state.external_work;
+  impulses         = state.impulses;
+  contact_impulses = state.contact_impulses;
+  external_work    = state.external_work;
   contact->restore(state.contact);
 }
 
@@ -332,7 +359,7 @@ std::vector<bool> Simulation<dim>::active_pair_dofs() const
 }
 
 template <int dim>
-std::vector<double> Simulation<dim>::body_forces() const
+typename Simulation<dim>::BodyForces Simulation<dim>::body_forces() const
 {
   // The nodes of the active pairs carry the contact force and fixed DoFs their support's reaction
   // (a clamped bar end); elsewhere M a + Q - W is only the Newton residual, whose sum over a body
@@ -341,13 +368,19 @@ std::vector<double> Simulation<dim>::body_forces() const
   // sum Q = 0): the momentum guard then checks the treatments' velocity corrections only.
   const std::vector<bool> in_active_pair = active_pair_dofs();
   const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
-  std::vector<double> forces(model->n_bodies(), 0.);
+  BodyForces forces{std::vector<double>(model->n_bodies(), 0.),
+                    std::vector<double>(model->n_bodies(), 0.)};
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
     double force = external_force[i];
     if (every_dof || in_active_pair[i] || is_fixed_dof[i])
-      force += mass[i] * acceleration[i] + internal_force[i] - external_force[i];
-    forces[dof_body[i]] += dof_direction[i] * force;
+    {
+      const double balance = mass[i] * acceleration[i] + internal_force[i] - external_force[i];
+      force += balance;
+      if (!is_fixed_dof[i])
+        forces.contact[dof_body[i]] += dof_direction[i] * balance;
+    }
+    forces.total[dof_body[i]] += dof_direction[i] * force;
   }
   return forces;
 }
@@ -355,23 +388,36 @@ std::vector<double> Simulation<dim>::body_forces() const
 template <int dim>
 void Simulation<dim>::accumulate_impulses(const State& before)
 {
-  const double dt                  = integrator.time_step();
-  const double gamma               = integrator.gamma();
-  const std::vector<double> forces = body_forces();
-  for (unsigned int b = 0; b < forces.size(); ++b)
-    impulses[b] += dt * ((1. - gamma) * before.body_forces[b] + gamma * forces[b]);
+  const double dt         = integrator.time_step();
+  const double gamma      = integrator.gamma();
+  const BodyForces forces = body_forces();
+  for (unsigned int b = 0; b < impulses.size(); ++b)
+  {
+    impulses[b] += dt * ((1. - gamma) * before.body_forces.total[b] + gamma * forces.total[b]);
+    contact_impulses[b] +=
+        dt * ((1. - gamma) * before.body_forces.contact[b] + gamma * forces.contact[b]);
+  }
   // The modified scheme's velocity correction is an impulse of its own (the paper's lambda_v):
   // the part of M (v_{n+1} - v_n) that the Newmark update of the accelerations does not explain.
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
     if (is_contact_dof[i])
-      impulses[dof_body[i]] +=
+    {
+      const double correction =
           dof_direction[i] * mass[i] *
           (velocity[i] - before.velocity[i] -
            dt * ((1. - gamma) * before.acceleration[i] + gamma * acceleration[i]));
+      impulses[dof_body[i]] += correction;
+      contact_impulses[dof_body[i]] += correction;
+    }
   forces_on_bodies = forces;
-  // Work of the external forces, trapezoidal: (W_n + W_{n+1}) / 2 . (u_{n+1} - u_n).
+  // The work of the external forces as the integrator applies them (doc/method.md, "The energy
+  // guard's external work"): Newmark, ((1 - gamma) W_n + gamma W_{n+1}) . (u_{n+1} - u_n), the
+  // work term of its energy identity (the trapezoid only for gamma = 1/2); a dissipative member,
+  // whose balance takes the load at t_{n+1-alpha_f}, W(t_{n+1-alpha_f}) . (u_{n+1} - u_n).
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    external_work += 0.5 * (before.external_force[i] + external_force[i]) *
+    external_work += (step_load.size() > 0
+                          ? step_load[i]
+                          : (1. - gamma) * before.external_force[i] + gamma * external_force[i]) *
                      (displacement[i] - before.displacement[i]);
 }
 
@@ -399,14 +445,14 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
   Vector<double> step_force = external_force;
   if (integrator.family() != IntegratorFamily::newmark)
   {
-    const Vector<double> load = loads->force(integrator.load_time(time));
+    step_load = loads->force(integrator.load_time(time));
     Vector<double> old_inertia_force(mass);
     old_inertia_force.scale(old_acceleration);
-    integrator.effective_force(load, old_inertia_force, before.internal_force, step_force);
+    integrator.effective_force(step_load, old_inertia_force, before.internal_force, step_force);
     step_old_acceleration = old_acceleration;
     step_old_net_force    = before.internal_force;
     step_old_net_force *= integrator.alpha_f();
-    step_old_net_force -= load;
+    step_old_net_force -= step_load;
   }
   const auto report = solver->solve(
       predictor, integrator.inertia_factor(), step_force, last_configuration, increment);
@@ -488,7 +534,7 @@ Simulation<dim>::pressure_samples(const std::vector<double>& pressures) const
     samples.push_back({slave,
                        current_position(slave, displacement),
                        contact->gap(k, displacement),
-                       contact->active_multiplier(k),
+                       contact->pair_force(k),
                        pressures[k],
                        contact->is_active(k)});
   }
@@ -533,7 +579,10 @@ typename Simulation<dim>::Measures Simulation<dim>::measure() const
   }
   measures.momenta.assign(model->n_bodies(), 0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
+  {
     measures.momenta[dof_body[i]] += mass[i] * dof_direction[i] * velocity[i];
+    measures.momentum_magnitude += mass[i] * std::abs(velocity[i]);
+  }
   return measures;
 }
 
@@ -542,7 +591,7 @@ StepGuards::Figures Simulation<dim>::guard_figures(const Measures& measures) con
 {
   double multiplier_magnitude = 0.;
   for (unsigned int k = 0; k < contact->n_pairs(); ++k)
-    multiplier_magnitude += std::abs(contact->active_multiplier(k));
+    multiplier_magnitude += std::abs(contact->pair_force(k));
   const auto energy_at_this_step_size = [this](const Measures& state)
   {
     return integrator.algorithmic_energy(
@@ -555,7 +604,9 @@ StepGuards::Figures Simulation<dim>::guard_figures(const Measures& measures) con
           measures.contact_force,
           multiplier_magnitude,
           measures.momenta,
-          impulses};
+          impulses,
+          measures.momentum_magnitude,
+          measures.kinetic_energy + measures.strain_energy};
 }
 
 template <int dim>
@@ -566,7 +617,7 @@ void Simulation<dim>::record_step(const Measures& measures,
 {
   std::vector<double> row = {time,
                              measures.contact_force,
-                             contact->total_multiplier(),
+                             contact->total_pair_force(),
                              static_cast<double>(contact->n_active()),
                              static_cast<double>(linear_solves),
                              measures.kinetic_energy,
@@ -643,8 +694,9 @@ void Simulation<dim>::write_reference_and_summary()
   const std::string& directory = parameters.output.directory;
   if (parameters.output.write_exact_solution)
     model->write_reference(directory, step_history.column("time"), monitors);
-  // The impact measures need uniform samples: the rows on the nominal grid.
-  model->summarize_run(directory, nominal_history(), log.get_stream());
+  // Every accepted row, the sub-steps of cut steps included, and the contact impulses the run
+  // accumulated (equal to the momentum changes they caused, see the momentum guard).
+  model->summarize_run(directory, step_history, contact_impulses, log.get_stream());
 }
 
 template <int dim>
@@ -663,16 +715,20 @@ History Simulation<dim>::nominal_history() const
 }
 
 template <int dim>
-std::string Simulation<dim>::problem_fingerprint() const
+ProblemFingerprint Simulation<dim>::problem_fingerprint() const
 {
-  std::ostringstream text;
-  text << std::setprecision(17) << "dimension " << dim << ", " << dof_handler.n_dofs() << " DoFs, "
-       << contact->n_pairs() << " contact candidates, " << model->n_bodies() << " bodies, dt "
-       << parameters.time.time_step << ", maximum step cuts " << parameters.time.max_step_cuts
-       << ", " << integrator.description(17) << ", "
-       << contact_dynamics_names().name(parameters.contact.dynamics) << ", "
-       << contact_formulation_names().name(parameters.contact.formulation);
-  return text.str();
+  std::vector<double> coordinates;
+  for (const auto& node : nodes->nodes())
+    for (unsigned int d = 0; d < dim; ++d)
+      coordinates.push_back(node.position[d]);
+  ProblemFingerprint fingerprint;
+  fingerprint.n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
+  fingerprint.entries = parameters.problem_entries;
+  fingerprint.discretization =
+      "dimension " + std::to_string(dim) + ", " + std::to_string(dof_handler.n_dofs()) + " DoFs, " +
+      std::to_string(contact->n_pairs()) + " contact candidates, " +
+      std::to_string(model->n_bodies()) + " bodies, node positions " + checksum(coordinates);
+  return fingerprint;
 }
 
 template <int dim>
@@ -689,8 +745,10 @@ void Simulation<dim>::serialize_state(Archive& archive)
   archive& external_force;
   archive& contact_state.active;
   archive& contact_state.multipliers;
-  archive& forces_on_bodies;
+  archive& forces_on_bodies.total;
+  archive& forces_on_bodies.contact;
   archive& impulses;
+  archive& contact_impulses;
   archive& external_work;
   archive& guarded_energy;
   archive& accepted_measures.kinetic_energy;
@@ -723,7 +781,7 @@ void Simulation<dim>::write_checkpoint()
   {
     std::ofstream stream(file + ".tmp", std::ios::binary);
     boost::archive::binary_oarchive archive(stream);
-    std::string fingerprint = problem_fingerprint();
+    const ProblemFingerprint fingerprint = problem_fingerprint();
     archive << fingerprint;
     serialize_state(archive);
     if (!stream)
@@ -745,11 +803,12 @@ void Simulation<dim>::read_checkpoint(const std::string& directory)
   try
   {
     boost::archive::binary_iarchive archive(stream);
-    std::string fingerprint;
+    ProblemFingerprint fingerprint;
     archive >> fingerprint;
-    if (fingerprint != problem_fingerprint())
-      throw InputError("--resume " + directory + ": the checkpoint belongs to another problem (" +
-                       fingerprint + ") than this one (" + problem_fingerprint() + ").");
+    const std::string difference = problem_fingerprint().difference_from(fingerprint);
+    if (!difference.empty())
+      throw InputError("--resume " + directory +
+                       ": the checkpoint belongs to another problem: " + difference + ".");
     serialize_state(archive);
   }
   catch (const boost::archive::archive_exception& error)

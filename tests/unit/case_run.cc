@@ -51,28 +51,28 @@ RunParameters test_parameters(const std::string& prm_file,
 }
 
 /**
- * Runs the simulation quietly and removes its output directory, after reading the profiles it
- * wrote (profile_t<T>.csv, contact_pressure_t<T>.csv) into `profiles` if that is not null.
+ * Runs the simulation quietly and removes its output directory, after reading the profiles and
+ * summaries it wrote (profile_t<T>.csv, contact_pressure_t<T>.csv, *_summary.csv) into `files`.
  */
 template <int dim>
 std::unique_ptr<Simulation<dim>> run_quietly(const RunParameters& parameters,
                                              std::unique_ptr<ProblemModel<dim>> model,
-                                             std::map<std::string, std::string>* profiles = nullptr)
+                                             std::map<std::string, std::string>& files)
 {
   std::ostringstream log;
   auto simulation = std::make_unique<Simulation<dim>>(parameters, std::move(model), log);
   simulation->run();
-  if (profiles != nullptr)
-    for (const auto& entry : std::filesystem::directory_iterator(parameters.output.directory))
+  for (const auto& entry : std::filesystem::directory_iterator(parameters.output.directory))
+  {
+    const std::string name = entry.path().filename().string();
+    if (name.rfind("profile_t", 0) == 0 || name.rfind("contact_pressure_t", 0) == 0 ||
+        name.find("_summary.csv") != std::string::npos)
     {
-      const std::string name = entry.path().filename().string();
-      if (name.rfind("profile_t", 0) == 0 || name.rfind("contact_pressure_t", 0) == 0)
-      {
-        std::ostringstream text;
-        text << std::ifstream(entry.path()).rdbuf();
-        (*profiles)[name] = text.str();
-      }
+      std::ostringstream text;
+      text << std::ifstream(entry.path()).rdbuf();
+      files[name] = text.str();
     }
+  }
   std::filesystem::remove_all(parameters.output.directory);
   return simulation;
 }
@@ -83,7 +83,7 @@ BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>&
   BarRun run;
   run.parameters = test_parameters(prm_file, overrides);
   const BarModel model(run.parameters.geometry);
-  run.simulation = run_quietly<1>(run.parameters, std::make_unique<BarModel>(model));
+  run.simulation = run_quietly<1>(run.parameters, std::make_unique<BarModel>(model), run.files);
   run.exact      = std::make_unique<ExactBarSolution>(
       model.exact_solution(run.parameters.time.end_time + run.parameters.time.time_step));
   return run;
@@ -109,7 +109,7 @@ MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string
       run_quietly<2>(run.parameters,
                      std::make_unique<AxisymmetricMeshModel>(
                          run.parameters.mesh, run.parameters.bodies, run.parameters.contact.pairs),
-                     &run.profiles);
+                     run.files);
   return run;
 }
 

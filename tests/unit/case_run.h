@@ -21,6 +21,8 @@ struct BarRun
   RunParameters parameters;
   std::unique_ptr<Simulation<1>> simulation;
   std::unique_ptr<ExactBarSolution> exact;
+  /** The text of exact_summary.csv, by name (see MeshRun::files). */
+  std::map<std::string, std::string> files;
 
   const History& history() const { return simulation->history(); }
   double time_step() const { return parameters.time.time_step; }
@@ -38,8 +40,11 @@ struct MeshRun
 {
   RunParameters parameters;
   std::unique_ptr<Simulation<2>> simulation;
-  /** The text of every profile_t<T>.csv and contact_pressure_t<T>.csv the run wrote, by name. */
-  std::map<std::string, std::string> profiles;
+  /**
+   * The text of every profile_t<T>.csv, contact_pressure_t<T>.csv and *_summary.csv the run
+   * wrote, by name.
+   */
+  std::map<std::string, std::string> files;
 
   const History& history() const { return simulation->history(); }
 };
@@ -52,8 +57,8 @@ struct MeshRun
 BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
 
 /**
- * The same for an axisymmetric mesh problem; the profiles it writes (Output/profile times) are
- * kept in memory, see MeshRun::profiles.
+ * The same for an axisymmetric mesh problem; the profiles it writes (Output/profile times) and
+ * its summary are kept in memory, see MeshRun::files.
  */
 MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
 

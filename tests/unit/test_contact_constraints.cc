@@ -108,7 +108,7 @@ TEST(ContactConstraints, ActiveSetEntersOnPenetrationAndLeavesOnTension)
   EXPECT_FALSE(contact.is_active(0));
   EXPECT_TRUE(contact.is_active(1));
   EXPECT_FALSE(contact.is_active(2));
-  EXPECT_EQ(contact.active_multiplier(2), 0.); // a released pair carries no force
+  EXPECT_EQ(contact.pair_force(2), 0.); // a released pair carries no force
   EXPECT_TRUE(contact.is_active(3));
   EXPECT_FALSE(contact.update_active_set(closed, 1e-6, 1e-6));
 }

@@ -380,7 +380,7 @@ TEST(SaddlePointNewton, ActiveConstraintInOneLinearSolve)
   unsigned int linear_solves = 0;
   const Vector<double> u     = springs.solve_step(2., linear_solves);
   expect_answer(springs, u, linear_solves, {{0.25, -0.25}, 1, true});
-  EXPECT_NEAR(springs.contact->active_multiplier(0), 2. - 1., tolerance);
+  EXPECT_NEAR(springs.contact->pair_force(0), 2. - 1., tolerance);
   EXPECT_NEAR(springs.solver->internal_force()[springs.a], 3. * 0.25, tolerance);
   EXPECT_NEAR(springs.solver->internal_force()[springs.b], 3. * -0.25, tolerance);
   EXPECT_NEAR(springs.solver->strain_energy(), 3. * 0.0625, tolerance);
@@ -402,7 +402,7 @@ TEST(SaddlePointNewton, InactiveConstraintInOneLinearSolveThenNone)
   unsigned int linear_solves = 0;
   const Vector<double> u     = springs.solve_step(0.1, linear_solves);
   expect_answer(springs, u, linear_solves, {{0.025, -0.025}, 1, false});
-  EXPECT_EQ(springs.contact->active_multiplier(0), 0.);
+  EXPECT_EQ(springs.contact->pair_force(0), 0.);
 
   const Vector<double> again =
       springs.solve_step(0.1, linear_solves, AtEnds{u[springs.a], u[springs.b]});

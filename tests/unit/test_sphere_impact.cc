@@ -174,8 +174,8 @@ TEST(SphereImpact, MomentumIsConservedForcesBalanceAndPairsDoNotPenetrate)
 TEST(SphereImpact, ContactPressureIsHertzianOnTheContactZoneAndZeroOutside)
 {
   const MeshRun& run = soft_impact();
-  const auto file    = run.profiles.find("contact_pressure_t" + mid_contact + ".csv");
-  ASSERT_NE(file, run.profiles.end());
+  const auto file    = run.files.find("contact_pressure_t" + mid_contact + ".csv");
+  ASSERT_NE(file, run.files.end());
   const std::vector<PressureRow> rows = pressure_rows(file->second);
 
   // Hertz's pressure at this time: p(r) = p0 sqrt(1 - r^2 / a^2), a = sqrt(R* d), p0 = 3 F / (2

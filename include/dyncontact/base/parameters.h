@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dyncontact
@@ -133,6 +134,7 @@ struct GuardParameters
 {
   bool energy;
   double energy_tolerance;
+  double plain_energy_tolerance;
   bool tensile_force;
   double tensile_force_tolerance;
   bool momentum;
@@ -263,6 +265,13 @@ struct RunParameters
   OutputParameters output;
   /// one line each, for the user: deprecated entries and what replaces them
   std::vector<std::string> warnings;
+  /**
+   * "Section/entry" and value of every entry that defines the problem, in declaration order: all
+   * but Output/... and Time integration/end time (a resumed run may write elsewhere and run
+   * longer), Contact/dynamics as resolved from the deprecated Time integration/scheme, which is
+   * left out. What a resumed run must repeat (ProblemFingerprint).
+   */
+  std::vector<std::pair<std::string, std::string>> problem_entries;
 };
 
 /**
@@ -302,6 +311,8 @@ private:
    * checks across subsections (contact dynamics vs formulation).
    */
   void resolve_and_check();
+  /** Fills RunParameters::problem_entries from the parsed entries. */
+  void record_problem_entries();
 
   std::string input_filename;
   std::string input_text;

@@ -56,6 +56,18 @@ public:
 
   /** Multiplies every pair's penalty stiffness by `factor` > 0 (automatic penalty sizing). */
   void scale_penalty_stiffness(double factor);
+
+  /**
+   * The contact force one unit of multiplier stands for [-], > 0: 1 (the default) when the step
+   * equation is the balance at t_{n+1} and carries the contact force G^T lambda_{n+1}; 1 - alpha_f
+   * for a dissipative generalized-alpha member, whose step equation is the balance at
+   * t_{n+1-alpha_f} divided by 1 - alpha_f (GeneralizedAlpha); gamma for a treatment whose step
+   * carries the contact impulse dt gamma G^T lambda_{n+1} (ImplicitContactImpulse). The pair
+   * forces, their total, the contact pressures and the penalty spring (force = eps <-g>) are
+   * then the contact force of the balance the step solves, whatever the integrator weights the
+   * multiplier with (doc/method.md, "Contact forces on every integrator").
+   */
+  void set_force_per_multiplier(double factor);
   const std::vector<ContactPair<dim>>& candidate_pairs() const { return pairs; }
   unsigned int n_active() const;
   bool is_active(unsigned int pair) const { return active[pair]; }
@@ -101,8 +113,10 @@ public:
    * Writes the constraint rows of the Newton system into `matrix` (rows and columns n_dofs + k,
    * symmetric) and their residuals into `constraint_residual` (length n_pairs): -g (Lagrange) or
    * -g - lambda/eps (penalty) for active pairs, lambda for inactive ones with diagonal
-   * `inactive_diagonal`. The update is (delta u, delta lambda) = matrix^{-1} (-residual). A null
-   * `matrix` computes the residuals only (ranks that do not own the constraint rows).
+   * `inactive_diagonal`; a penalty pair's row is -g - f lambda / eps, f the force per multiplier,
+   * so that its force f lambda is eps <-g>. The update is (delta u, delta lambda) = matrix^{-1}
+   * (-residual). A null `matrix` computes the residuals only (ranks that do not own the constraint
+   * rows).
    */
   void assemble_constraint_rows(const Vector<double>& displacement,
                                 double inactive_diagonal,
@@ -154,14 +168,17 @@ public:
                                    const Vector<double>& net_internal_force,
                                    const Tensor<1, dim>& direction) const;
 
-  /** The multiplier of candidate `pair` if it is active, else zero. */
-  double active_multiplier(unsigned int pair) const
+  /**
+   * The contact force of candidate `pair` [force], compression positive: its multiplier times
+   * the force per multiplier (set_force_per_multiplier()) if it is active, else zero.
+   */
+  double pair_force(unsigned int pair) const
   {
-    return active[pair] ? multiplier_values[pair] : 0.;
+    return active[pair] ? force_per_multiplier * multiplier_values[pair] : 0.;
   }
 
-  /** Sum of the multipliers of the active pairs. */
-  double total_multiplier() const;
+  /** Sum of pair_force() over the pairs [force]. */
+  double total_pair_force() const;
 
   /** The largest penetration max(0, -g) over all candidate pairs at `displacement`. */
   double max_penetration(const Vector<double>& displacement) const;
@@ -181,8 +198,8 @@ public:
   double contact_radius(const Vector<double>& displacement) const;
 
   /**
-   * The contact pressure at every pair (see ContactGeometry::contact_pressures()) at
-   * `displacement` from the multipliers of the active pairs; empty for pairs with fixed normals.
+   * The contact pressure at every pair [force/area] (see ContactGeometry::contact_pressures()) at
+   * `displacement` from the pair forces (pair_force()); empty for pairs with fixed normals.
    */
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
@@ -210,5 +227,6 @@ private:
   std::vector<bool> active;
   Vector<double> multiplier_values;
   std::vector<double> reference_gaps; ///< empty: zero for every pair
+  double force_per_multiplier = 1.;   ///< see set_force_per_multiplier()
 };
 } // namespace dyncontact

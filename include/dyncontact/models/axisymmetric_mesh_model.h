@@ -29,9 +29,6 @@ public:
 
   unsigned int element_degree() const override { return 2; }
   unsigned int n_bodies() const override { return bodies.bodies.size(); }
-  /** 2 sqrt(6) c_p / h_min: the highest frequency of a lumped 1D 3-node element chain, c_p the
-   * dilatational wave speed and h_min the shortest cell edge (a bound, used for warnings). */
-  double highest_frequency() const override;
   /** Reads the mesh; throws InputError if a body has no cells. */
   void create_triangulation(Triangulation<2>& triangulation) override;
   std::vector<BodyMaterial> body_materials() const override;
@@ -69,14 +66,16 @@ public:
                        const std::vector<Node<2>>& monitors) const override;
   /**
    * For a Hertz impact: measures the contact force history (measure_impact()) and writes
-   * impact_summary.csv, the peak force, its time, contact start, end and duration, impulse and
-   * ringing next to Hertz's values and the relative differences, and, where the finite-sphere law
+   * impact_summary.csv, the peak force, its time, contact start, end and duration, impulse (the
+   * contact impulse on body 1, `contact_impulses[0]`, compression positive) and ringing next to
+   * Hertz's values and the relative differences, and, where the finite-sphere law
    * applies, its values and the differences from it (columns finite_sphere,
    * finite_sphere_difference). A run of one step has nothing to measure: it writes nothing and
    * says so.
    */
   void summarize_run(const std::string& directory,
                      const History& history,
+                     const std::vector<double>& contact_impulses,
                      std::ostream& log) const override;
   /**
    * Hertz's theory of this impact if it applies: one contact pair (declared, or the default of

@@ -38,12 +38,6 @@ public:
   /** Number of bodies. */
   virtual unsigned int n_bodies() const = 0;
 
-  /**
-   * An upper bound of the highest natural frequency (rad/time) of the discretized bodies with the
-   * lumped mass; explicit-like Newmark (2 beta < gamma) is stable only for omega dt below a limit.
-   */
-  virtual double highest_frequency() const = 0;
-
   /** Material and density of every body, indexed by material id. */
   virtual std::vector<BodyMaterial> body_materials() const = 0;
 
@@ -80,11 +74,16 @@ public:
                                const std::vector<Node<dim>>& monitors) const;
 
   /**
-   * Compares the finished run's `history` with the model's reference, writing the comparison into
-   * `directory` and a short report to `log`. The default does nothing.
+   * Compares the finished run's `history` (every accepted row, the sub-steps of cut steps
+   * included) with the model's reference, writing the comparison into `directory` and a short
+   * report to `log`. `contact_impulses` [force time], one per body, is the impulse of the contact
+   * forces on it along the impact direction since t = 0, as the run accumulated it (the momentum
+   * change the contact caused, to the momentum guard's tolerance). The default does nothing.
    */
-  virtual void
-  summarize_run(const std::string& directory, const History& history, std::ostream& log) const;
+  virtual void summarize_run(const std::string& directory,
+                             const History& history,
+                             const std::vector<double>& contact_impulses,
+                             std::ostream& log) const;
 
   /** A few lines describing the problem (sizes, wave speeds, Courant numbers). */
   virtual void print_summary(std::ostream& out, double time_step) const = 0;

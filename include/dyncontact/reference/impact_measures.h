@@ -30,9 +30,11 @@ struct ImpactMeasures
 };
 
 /**
- * The ImpactMeasures of the contact-force history @p force sampled at @p times: F_n = F(t_n) with a
- * uniform step dt, compression positive and zero outside contact, as computed by an implicit
- * Newmark time integrator for one impact.
+ * The ImpactMeasures of the contact-force history @p force sampled at @p times: F_n = F(t_n),
+ * compression positive and zero outside contact, as computed by an implicit Newmark time
+ * integrator for one impact. The steps t_{n+1} - t_n may differ (a run whose step control cut
+ * some steps records every sub-step); the formulas below are written for a uniform step dt and
+ * take each step's own size where they need one.
  *
  * Definitions, with the reasoning behind them:
  *
@@ -59,10 +61,12 @@ struct ImpactMeasures
  * - peak_force and peak_time: the parabola through the largest sample (the first, for ties) and
  *   its two neighbours has its vertex within half a step of the largest sample; its value there
  *   estimates a smooth peak with an error of order dt^4 F'''' instead of the order dt^2 F'' of the
- *   raw maximum. If a neighbour is missing or the parabola is not concave (a flat top), the raw
+ *   raw maximum (with unequal steps the parabola through the three samples, of order dt^3 F''').
+ *   If a neighbour is missing or the parabola is not concave (a flat top), the raw
  *   largest sample and its time are returned.
  *
- * - impulse: the trapezoidal rule over all samples, dt (F_0 / 2 + F_1 + ... + F_{N-1} / 2). For
+ * - impulse: the trapezoidal rule over all samples, dt (F_0 / 2 + F_1 + ... + F_{N-1} / 2) for a
+ *   uniform step, the sum of (t_{n+1} - t_n) (F_n + F_{n+1}) / 2 in general. For
  *   Newmark with gamma = 1/2 the velocity update is M (v_{n+1} - v_n) = dt (f_n + f_{n+1}) / 2, so
  *   this sum equals the change of momentum that the contact force causes exactly, not just to
  *   within a quadrature error. (For a smooth F that vanishes with F' = 0 at both ends, like
@@ -74,7 +78,9 @@ struct ImpactMeasures
  *     P_n = (F_{n-2} - 4 F_{n-1} + 6 F_n - 4 F_{n+1} + F_{n+2}) / 16,
  *
  *   divided by peak_force; zero if no sample has such a window (fewer than 5 samples in the contact
- *   interval). P_n is the 4th difference over 16; equivalently, 35/48 of the residual F_n - A_n,
+ *   interval). Only windows of four equal steps count (to 1e-9 of a step plus the round-off of the
+ *   times): across a change of step size the 4th difference is no period-2 measure. P_n is the
+ *   4th difference over 16; equivalently, 35/48 of the residual F_n - A_n,
  *   where A_n is the value at t_n of the least-squares parabola through the 5 samples (the
  *   Savitzky-Golay smoothing (-3, 12, 17, 12, -3) / 35). Why it measures the ringing:
  *   a period-2 oscillation F_n = F0 (1 + e (-1)^n) has 4th difference 16 F0 e (-1)^n, so P_n =
@@ -90,9 +96,8 @@ struct ImpactMeasures
  *   as large as the oscillation it should reveal; the 4th difference removes every cubic exactly.
  *
  * Input errors throw std::invalid_argument with a message saying what is wrong: sizes of @p times
- * and @p force that differ, fewer than 3 samples, a non-finite time or force, times that do not
- * increase strictly, and time steps that differ from the mean step (t_{N-1} - t_0) / (N - 1) by
- * more than 1e-9 of it (plus a few units of round-off of the times themselves). A history without
+ * and @p force that differ, fewer than 3 samples, a non-finite time or force, and times that do
+ * not increase strictly. A history without
  * any positive force is not an error: the spheres never touched, and the result is all zeros
  * (including the impulse) with contact_samples = 0.
  *

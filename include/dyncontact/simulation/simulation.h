@@ -11,6 +11,7 @@
 #include <dyncontact/models/problem_model.h>
 #include <dyncontact/postprocess/field_output.h>
 #include <dyncontact/postprocess/history.h>
+#include <dyncontact/simulation/problem_fingerprint.h>
 #include <dyncontact/simulation/step_guards.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
@@ -110,13 +111,23 @@ public:
   const std::vector<Node<dim>>& monitor_nodes() const { return monitors; }
 
 private:
+  /**
+   * Per body, along the impact direction [force]: the total force that changes its momentum
+   * (contact, supports and external forces), and its contact part alone.
+   */
+  struct BodyForces
+  {
+    std::vector<double> total, contact;
+  };
+
   /** The state a failed step returns to. */
   struct State
   {
     Vector<double> displacement, velocity, acceleration, internal_force, external_force;
     typename ContactConstraints<dim>::State contact;
     double tangent_scale; ///< the solver's, see ContactNewtonSolver::tangent_scale()
-    std::vector<double> body_forces, impulses;
+    BodyForces body_forces;
+    std::vector<double> impulses, contact_impulses;
     double external_work;
   };
   State current_state() const;
@@ -128,6 +139,7 @@ private:
     double kinetic_energy, strain_energy, acceleration_energy, algorithmic_energy, contact_force,
         force_imbalance, velocity_jump, acceleration_jump;
     std::vector<double> momenta;
+    double momentum_magnitude; ///< sum of |m v| over every DoF
   };
   Measures measure() const;
   StepGuards::Figures guard_figures(const Measures& measures) const;
@@ -157,14 +169,17 @@ private:
   /** Solves the step from `before` to `time` with the Newmark step size; throws SolverFailure. */
   unsigned int do_time_step(const State& before);
   /**
-   * Per body, the force along the impact direction on the nodes of its active pairs (M a + Q - W)
-   * plus its total external force, at the current state: with sum Q = 0 over a free body this is
-   * the total force that changes its momentum, up to the Newton residual of its other nodes.
+   * Per body, the force along the impact direction on the nodes of its active pairs and fixed
+   * DoFs (M a + Q - W) plus its total external force, at the current state: with sum Q = 0 over a
+   * free body this is the total force that changes its momentum, up to the Newton residual of its
+   * other nodes. The contact part leaves out the external forces and the supports (fixed DoFs).
    */
-  std::vector<double> body_forces() const;
+  BodyForces body_forces() const;
   /** Per DoF: whether it belongs to a node of an active pair (at the current state). */
   std::vector<bool> active_pair_dofs() const;
-  /** Adds the impulses of the step from `before` (Newmark-weighted forces plus rate corrections).
+  /**
+   * Adds the impulses of the step from `before` (Newmark-weighted forces plus rate corrections),
+   * total and contact, and the external work.
    */
   void accumulate_impulses(const State& before);
   /**
@@ -178,8 +193,8 @@ private:
   /** Writes the reference solution at the recorded times and the run's summary. */
   void write_reference_and_summary();
 
-  /** What must match between a checkpoint and the run that resumes it, as readable text. */
-  std::string problem_fingerprint() const;
+  /** What must match between a checkpoint and the run that resumes it. */
+  ProblemFingerprint problem_fingerprint() const;
   /** Writes or reads everything a resumed run needs to repeat the uninterrupted one exactly. */
   template <class Archive>
   void serialize_state(Archive& archive);
@@ -246,6 +261,8 @@ private:
   std::unique_ptr<Kinematics<dim>> kinematics;
   std::unique_ptr<ElasticBodies<dim>> bodies;
   Vector<double> mass;
+  /** ElasticBodies::highest_frequency_bound() of the bodies with their fixed DoFs [1/time]. */
+  double highest_frequency = 0.;
   std::vector<types::global_dof_index> fixed_dofs;
   std::unique_ptr<SurfaceTractions<dim>> loads;
   Vector<double> external_force;                         ///< W at the current time
@@ -273,13 +290,16 @@ private:
    * Newmark, whose balance is at t_{n+1}.
    */
   Vector<double> step_old_acceleration, step_old_net_force;
+  /** For a dissipative integrator, W(t_{n+1-alpha_f}) of the last step; empty for Newmark. */
+  Vector<double> step_load;
   /** Per DoF: its body, and the impact-direction component of its unit vector. */
   std::vector<unsigned int> dof_body;
   std::vector<double> dof_direction;
   std::vector<bool> is_contact_dof;     ///< a DoF of a node of some candidate pair
   std::vector<bool> is_fixed_dof;       ///< held at zero (fixed_dofs)
-  std::vector<double> forces_on_bodies; ///< body_forces() at the current state
+  BodyForces forces_on_bodies;          ///< body_forces() at the current state
   std::vector<double> impulses;         ///< per body, accumulated since t = 0
+  std::vector<double> contact_impulses; ///< per body, of the contact forces alone, since t = 0
   double external_work = 0.;            ///< work of the external forces since t = 0
   StepGuards guards;
   /**

@@ -16,11 +16,14 @@ namespace dyncontact
  * The physics a solved step must respect before it is accepted, checked on figures the
  * Simulation measures (a tripped guard makes the step fail, which cuts it):
  *
- * - energy: the algorithmic energy E_{n+1} (Newmark::algorithmic_energy; Simulation passes E_0
- *   plus the changes of the accepted steps, each at its own step size) must not exceed the
- *   initial energy plus the work of the external forces by more than `energy tolerance` times the
- *   energy scale (the larger of |E_0| and |external work|; for E_0 = 0 the largest accepted
- *   energy instead). Elastic bodies in
+ * - energy: the algorithmic energy E_{n+1} (GeneralizedAlpha::algorithmic_energy; Simulation
+ *   passes E_0 plus the changes of the accepted steps, each at its own step size) must not exceed
+ *   the initial energy plus the work of the external forces by more than `energy tolerance` times
+ *   the energy scale (the larger of |E_0| and |external work|; for E_0 = 0 the largest accepted
+ *   energy instead). With 2 beta < gamma the plain energy (kinetic + strain) must in addition
+ *   stay within `plain energy tolerance` of the same bound: the algorithmic energy weighs the
+ *   strain energy of a mode at omega dt by 1 - (omega dt / limit)^2, nearly zero next to the
+ *   stability limit, where a blow-up of the highest modes leaves it unchanged. Elastic bodies in
  *   frictionless contact cannot gain energy; trapezoidal Newmark conserves it for linear free
  *   systems, and the modified scheme dissipates some at impact. The check is cumulative, against
  *   the start, because per-step fluctuations of the nonlinear trapezoidal rule (up to 1e-3 of E
@@ -31,7 +34,9 @@ namespace dyncontact
  * - momentum: for every body, the momentum change along the impact direction since t = 0 must
  *   equal the accumulated impulse of the contact and external forces on it (see
  *   Simulation: Newmark-weighted recovered forces plus the modified scheme's velocity-correction
- *   impulses) to `momentum tolerance` times the momentum scale (the largest total |p| seen).
+ *   impulses) to `momentum tolerance` times the momentum scale (the largest momentum magnitude
+ *   seen, the sum of |m v| over every DoF: a scale that exists when the net momenta vanish, as
+ *   in a free vibration).
  *   Equality is exact for a converged step; a gap means a residual left in the momentum balance.
  *
  * A non-finite figure always rejects the step. A zero scale (nothing moves yet) skips that check. A
@@ -49,12 +54,19 @@ public:
     double energy;                ///< algorithmic energy at t_{n+1}
     double external_work;         ///< work of the external forces since t = 0
     double contact_force;         ///< recovered total contact force, compression positive
-    double multiplier_magnitude;  ///< sum of |multiplier| of the active pairs
+    double multiplier_magnitude;  ///< sum of the active pairs' |force|
     std::vector<double> momenta;  ///< per body, along the impact direction
     std::vector<double> impulses; ///< per body, accumulated since t = 0
+    double momentum_magnitude;    ///< sum of |m v| over every DoF (zero only at rest)
+    double plain_energy;          ///< kinetic + strain energy at t_{n+1}
   };
 
-  explicit StepGuards(const GuardParameters& parameters);
+  /**
+   * `plain_energy_checked`: the integrator is conditionally stable (Newmark with 2 beta < gamma),
+   * whose algorithmic energy underweights the highest modes; the energy guard then also bounds
+   * the plain energy (Guards/plain energy tolerance).
+   */
+  StepGuards(const GuardParameters& parameters, bool plain_energy_checked);
 
   /** Takes the references (E_0, p_0) from the figures of the initial state. */
   void initialize(const Figures& initial);
@@ -75,7 +87,8 @@ public:
   template <class Archive>
   void serialize(Archive& archive, const unsigned int)
   {
-    archive& initial_energy& energy_scale& force_scale& momentum_scale& initial_momenta;
+    archive& initial_energy& initial_plain_energy& energy_scale& force_scale& momentum_scale&
+        initial_momenta;
     for (Record& record : disabled_violations)
       archive& record.first_reason& record.first_time& record.largest;
   }
@@ -93,10 +106,12 @@ private:
   std::pair<std::string, double> violation(Guard guard, const Figures& step) const;
 
   const GuardParameters parameters;
-  double initial_energy = 0.;
-  double energy_scale   = 0.;
-  double force_scale    = 0.;
-  double momentum_scale = 0.;
+  const bool plain_energy_checked;
+  double initial_energy       = 0.;
+  double initial_plain_energy = 0.;
+  double energy_scale         = 0.;
+  double force_scale          = 0.;
+  double momentum_scale       = 0.;
   std::vector<double> initial_momenta;
   /** Per guard switched off: the first violation's text and time, and the largest amount. */
   struct Record
