@@ -5,11 +5,15 @@
 #include <array>
 #include <limits>
 #include <optional>
+#include <sstream>
 
 namespace dyncontact
 {
 namespace
 {
+/// |n_s - sum_i N_i n_i| (at most 2) below which a slave node does not face the master surface.
+constexpr double least_averaged_normal = 1e-8;
+
 /** Face `face` of `surface` at `displacement`. */
 template <int dim>
 QuadraticFace<dim> current_face(const ContactSurface<dim>& surface,
@@ -107,6 +111,14 @@ void project_onto_faces(const ContactSurface<dim>& master_surface,
     pair.masters.push_back({master_surface.nodes()[node], weights[i]});
     normal -= weights[i] * master_normals[node];
   }
+  if (!(normal.norm() >= least_averaged_normal)) // also for NaN
+  {
+    std::ostringstream where;
+    where << pair.slave.position;
+    throw SolverFailure("node-to-segment contact: the slave node at " + where.str() +
+                        " (reference position) does not face the master surface (its outward "
+                        "normal equals the master surface's there).");
+  }
   pair.normal = normal / normal.norm();
 }
 } // namespace
@@ -142,8 +154,15 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
     ContactPair<dim> pair;
     pair.slave             = slave_nodes[i];
     pair.penalty_stiffness = penalty_stiffness_per_area * slave_areas[i];
-    project_onto_faces(
-        this->master_surface, faces, undeformed, slave_normals[i], master_normals, pair);
+    try
+    {
+      project_onto_faces(
+          this->master_surface, faces, undeformed, slave_normals[i], master_normals, pair);
+    }
+    catch (const SolverFailure& failure) // at the reference configuration: the input's fault
+    {
+      throw InputError(failure.what());
+    }
     Point<dim> closest_point;
     for (const MasterNode<dim>& master : pair.masters)
       closest_point += master.weight * master.node.position;

@@ -42,7 +42,11 @@ public:
   /** Pairs with fixed normals (bars, a rigid wall). */
   ContactConstraints(std::vector<ContactPair<dim>> pairs, ContactFormulation formulation);
 
-  /** The pairs of `geometry`, which follow the current configuration (update_geometry()). */
+  /**
+   * The pairs of `geometry`, which follow the current configuration (update_geometry()). The
+   * geometry must have at least one pair and finite normals (its constructor's InputError sees to
+   * it; AssertThrow otherwise).
+   */
   ContactConstraints(const ContactGeometry<dim>& geometry, ContactFormulation formulation);
 
   /**

@@ -61,7 +61,9 @@ public:
    * interpolation, which the tolerance must cover for touching bodies to start closed. A pair
    * whose reference gap is below -`touching_tolerance` means overlap: InputError naming both
    * bodies, where and how much. Also InputError if no slave node lies within `search_radius` of
-   * the master surface; AssertThrow if a face does not have three nodes (not Q2).
+   * the master surface (no candidate pair), or if a candidate's averaged normal vanishes (its
+   * outward normal equals the master surface's: no normal, never a NaN one); AssertThrow if a face
+   * does not have three nodes (not Q2).
    */
   NodeToSegmentContact(ContactSurface<dim> slave_surface,
                        ContactSurface<dim> master_surface,
@@ -74,7 +76,8 @@ public:
 
   /**
    * Sets each pair's masters, weights and normal by projecting its slave node onto its candidate
-   * faces at `displacement` (a whole vector in the DoFHandler's numbering).
+   * faces at `displacement` (a whole vector in the DoFHandler's numbering). Throws SolverFailure
+   * if a pair's averaged normal vanishes there (a step that deformed the surfaces that far).
    */
   void update_pairs(const Vector<double>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
