@@ -36,6 +36,13 @@ void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement
 }
 
 template <int dim>
+void ContactConstraints<dim>::update_master_points(const Vector<double>& displacement)
+{
+  if (geometry != nullptr)
+    geometry->update_master_points(displacement, pairs);
+}
+
+template <int dim>
 void ContactConstraints<dim>::scale_penalty_stiffness(const double factor)
 {
   for (auto& pair : pairs)

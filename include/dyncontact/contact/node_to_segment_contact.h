@@ -37,8 +37,12 @@ namespace dyncontact
  * meets its mirror node (xi at that node, weight 1 up to round-off), also while the pair is open,
  * so both discretizations give the same active sets (the ctest
  * cli.node_to_segment_matches_node_to_node_on_matching_meshes). As in NodeToNodeContact, the
- * pairs are those of the last converged configuration within a time step (the gap is linear in
- * u; Newton's tangent is exact for it); the rows n N_i leave out the change of xi and n with u.
+ * normals are those of the last converged configuration within a time step. The master point
+ * follows the Newton iterates (update_master_points(): along the held normal), so that the step's
+ * constraint and contact forces are those of its own configuration: held at u_n too, a sliding
+ * slave node's gap jumped at every re-projection, and an antisymmetric sliding mode of two flat
+ * rod ends grew from round-off (doc/method.md, section 4.1). The rows n N_i leave out the change
+ * of xi and n with u (Newton converges linearly while a slave node slides).
  *
  * Penalty stiffness of a pair: `penalty_stiffness_per_area` [force/length^3] times the slave
  * node's lumped reference area (ContactSurface::lumped_areas(), 2 pi r weighted in axisymmetry).
@@ -81,6 +85,15 @@ public:
    */
   void update_pairs(const Vector<double>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
+
+  /**
+   * Moves each pair's master point, its normal n kept, to where the line through its slave node
+   * along n meets its candidate faces at `displacement` (the nearest such point; else the closest
+   * point of the faces): within a time step the gap n . (x(xi) - x_s) is then measured to the
+   * master face, not to a material point of it.
+   */
+  void update_master_points(const Vector<double>& displacement,
+                            std::vector<ContactPair<dim>>& pairs) const override;
 
   /** The slave node's DoFs and those of every node of the pair's candidate faces. */
   std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;
