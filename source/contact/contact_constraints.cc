@@ -21,6 +21,11 @@ ContactConstraints<dim>::ContactConstraints(const ContactGeometry<dim>& geometry
     : ContactConstraints(geometry.pairs(), formulation)
 {
   this->geometry = &geometry;
+  // Every geometry's constructor throws InputError instead (the run indexes its pairs).
+  AssertThrow(!pairs.empty(), ExcMessage("a contact geometry without candidate pairs"));
+  for (const ContactPair<dim>& pair : pairs)
+    AssertThrow(std::isfinite(pair.normal.norm()),
+                ExcMessage("a contact pair with a normal that is not finite"));
 }
 
 template <int dim>
@@ -28,6 +33,13 @@ void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement
 {
   if (geometry != nullptr)
     geometry->update_pairs(displacement, pairs);
+}
+
+template <int dim>
+void ContactConstraints<dim>::update_master_points(const Vector<double>& displacement)
+{
+  if (geometry != nullptr)
+    geometry->update_master_points(displacement, pairs);
 }
 
 template <int dim>

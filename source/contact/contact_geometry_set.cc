@@ -20,17 +20,36 @@ ContactGeometrySet<dim>::ContactGeometrySet(
 }
 
 template <int dim>
-void ContactGeometrySet<dim>::update_pairs(const Vector<double>& displacement,
-                                           std::vector<ContactPair<dim>>& pairs) const
+template <typename Update>
+void ContactGeometrySet<dim>::update_members(std::vector<ContactPair<dim>>& pairs,
+                                             const Update& update) const
 {
   AssertDimension(pairs.size(), all_pairs.size());
   for (unsigned int m = 0; m < members.size(); ++m)
   {
     std::vector<ContactPair<dim>> own(pairs.begin() + first_pair[m],
                                       pairs.begin() + first_pair[m + 1]);
-    members[m]->update_pairs(displacement, own);
+    update(*members[m], own);
     std::copy(own.begin(), own.end(), pairs.begin() + first_pair[m]);
   }
+}
+
+template <int dim>
+void ContactGeometrySet<dim>::update_pairs(const Vector<double>& displacement,
+                                           std::vector<ContactPair<dim>>& pairs) const
+{
+  update_members(pairs,
+                 [&](const ContactGeometry<dim>& member, std::vector<ContactPair<dim>>& own)
+                 { member.update_pairs(displacement, own); });
+}
+
+template <int dim>
+void ContactGeometrySet<dim>::update_master_points(const Vector<double>& displacement,
+                                                   std::vector<ContactPair<dim>>& pairs) const
+{
+  update_members(pairs,
+                 [&](const ContactGeometry<dim>& member, std::vector<ContactPair<dim>>& own)
+                 { member.update_master_points(displacement, own); });
 }
 
 template <int dim>

@@ -16,6 +16,66 @@ Point<dim> centroid(const std::vector<Node<dim>>& nodes)
     sum += node.position;
   return sum / static_cast<double>(nodes.size());
 }
+
+/** The area-weighted mean of a surface's unit nodal `normals` (`areas`: lumped nodal areas). */
+template <int dim>
+Tensor<1, dim> mean_normal(const std::vector<Tensor<1, dim>>& normals,
+                           const std::vector<double>& areas)
+{
+  Tensor<1, dim> sum;
+  double area = 0.;
+  for (unsigned int i = 0; i < normals.size(); ++i)
+  {
+    sum += areas[i] * normals[i];
+    area += areas[i];
+  }
+  return sum / area;
+}
+
+/// |mean normal| of a flat surface: its unit normals are parallel to within about 0.1 degree.
+constexpr double flat_mean_normal = 1. - 1e-6;
+/// |mean n_A - mean n_B| below which the mean normals give no direction (the surfaces do not face
+/// each other on average, e.g. two closed surfaces).
+constexpr double least_facing = 0.5;
+
+/**
+ * The unit direction e from surface A toward surface B along which the surfaces approach, which
+ * decides which nodes face each other (`nodes_a`, `nodes_b`: the surfaces' nodes; `mean_normal_a`,
+ * `mean_normal_b`: their mean_normal()). The direction between the centroids of the two node sets,
+ * except where it is not one: for two flat surfaces (both mean normals of length at least
+ * flat_mean_normal: rod ends, a flat punch, block on block), whose centroids may coincide (faces
+ * touching) or be offset along the faces (a punch off the centre of the face below), and for
+ * surfaces whose centroids coincide to `touching_tolerance` [length]. Those take the mean normals'
+ * difference, n_A - n_B normalized. Throws InputError if that difference is shorter than
+ * least_facing (NaN included), i.e. the surfaces do not face each other: e is always a finite
+ * unit vector.
+ */
+template <int dim>
+Tensor<1, dim> approach_direction(const std::vector<Node<dim>>& nodes_a,
+                                  const std::vector<Node<dim>>& nodes_b,
+                                  const Tensor<1, dim>& mean_normal_a,
+                                  const Tensor<1, dim>& mean_normal_b,
+                                  const double touching_tolerance)
+{
+  const Tensor<1, dim> centres = centroid(nodes_b) - centroid(nodes_a);
+  const Tensor<1, dim> facing  = mean_normal_a - mean_normal_b;
+  const bool flat =
+      mean_normal_a.norm() >= flat_mean_normal && mean_normal_b.norm() >= flat_mean_normal;
+  if (!flat && centres.norm() > touching_tolerance)
+    return centres / centres.norm();
+  if (facing.norm() >= least_facing) // also false for NaN
+    return facing / facing.norm();
+  const std::string body_a = "body " + std::to_string(nodes_a.front().body + 1);
+  const std::string body_b = "body " + std::to_string(nodes_b.front().body + 1);
+  throw InputError("the contact surfaces of " + body_a + " and " + body_b +
+                   (flat ? " are flat but do not face each other (their outward normals point the "
+                           "same way)"
+                         : " have a common centroid (to " + format_number(touching_tolerance) +
+                               ") and do not face each other on average (mean outward normals " +
+                               "differ by " + format_number(facing.norm()) + " < " +
+                               format_number(least_facing) + ")") +
+                   ": node-to-node contact finds no direction along which they approach.");
+}
 } // namespace
 
 template <int dim>
@@ -28,14 +88,17 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
 {
   const std::vector<Node<dim>>& nodes_a = this->surface_a.nodes();
   const std::vector<Node<dim>>& nodes_b = this->surface_b.nodes();
-  Tensor<1, dim> approach               = centroid(nodes_b) - centroid(nodes_a);
-  approach /= approach.norm();
   const Vector<double> undeformed(this->surface_a.n_dofs());
-  const auto normals_a     = this->surface_a.normals(undeformed);
-  const auto normals_b     = this->surface_b.normals(undeformed);
-  const auto areas_a       = this->surface_a.lumped_areas(undeformed);
-  const auto areas_b       = this->surface_b.lumped_areas(undeformed);
-  const auto across_offset = [&approach](const Tensor<1, dim>& offset)
+  const auto normals_a          = this->surface_a.normals(undeformed);
+  const auto normals_b          = this->surface_b.normals(undeformed);
+  const auto areas_a            = this->surface_a.lumped_areas(undeformed);
+  const auto areas_b            = this->surface_b.lumped_areas(undeformed);
+  const Tensor<1, dim> approach = approach_direction(nodes_a,
+                                                     nodes_b,
+                                                     mean_normal(normals_a, areas_a),
+                                                     mean_normal(normals_b, areas_b),
+                                                     touching_tolerance);
+  const auto across_offset      = [&approach](const Tensor<1, dim>& offset)
   { return (offset - (offset * approach) * approach).norm(); };
 
   unsigned int unmatched = 0;
@@ -68,6 +131,12 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
     candidate_pairs.push_back(pair);
     surface_nodes_of_pair.emplace_back(i, partner);
   }
+  const std::string body_a = "body " + std::to_string(nodes_a.front().body + 1);
+  const std::string body_b = "body " + std::to_string(nodes_b.front().body + 1);
+  if (candidate_pairs.empty() && unmatched == 0)
+    throw InputError("no surface node of " + body_a + " faces " + body_b +
+                     " (outward normal within 60 degrees of the approach direction): node-to-node "
+                     "contact has no candidate pairs.");
   const auto reference_normals = current_normals(undeformed);
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
     candidate_pairs[k].normal = reference_normals[k];
@@ -77,10 +146,8 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
         throw overlap_at_start(pair, touching_tolerance);
   if (unmatched > 0)
     throw InputError(std::to_string(unmatched) + " of the " +
-                     std::to_string(unmatched + candidate_pairs.size()) +
-                     " surface nodes of body " + std::to_string(nodes_a.front().body + 1) +
-                     " that face body " + std::to_string(nodes_b.front().body + 1) +
-                     " have no node of body " + std::to_string(nodes_b.front().body + 1) +
+                     std::to_string(unmatched + candidate_pairs.size()) + " surface nodes of " +
+                     body_a + " that face " + body_b + " have no node of " + body_b +
                      " across from them (first at " + first_unmatched.str() +
                      "): node-to-node contact needs matching (e.g. mirrored) meshes of the facing "
                      "surfaces.");

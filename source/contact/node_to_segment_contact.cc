@@ -5,11 +5,15 @@
 #include <array>
 #include <limits>
 #include <optional>
+#include <sstream>
 
 namespace dyncontact
 {
 namespace
 {
+/// |n_s - sum_i N_i n_i| (at most 2) below which a slave node does not face the master surface.
+constexpr double least_averaged_normal = 1e-8;
+
 /** Face `face` of `surface` at `displacement`. */
 template <int dim>
 QuadraticFace<dim> current_face(const ContactSurface<dim>& surface,
@@ -24,10 +28,11 @@ QuadraticFace<dim> current_face(const ContactSurface<dim>& surface,
 }
 
 /**
- * The point of `face` on the ray from `x_s` along the averaged normal: xi with
- * (x(xi) - x_s) x nbar(xi) = 0, nbar(xi) = n_s - sum_i N_i(xi) n_i (the slave node's normal and
- * the face nodes' `normals`), by Newton's method from `start`. Empty if Newton does not converge
- * to a step below 1e-14 in 20 iterations or the root lies outside the face (beyond 1e-12).
+ * The point of `face` on the ray from `x_s` along nbar: xi with (x(xi) - x_s) x nbar(xi) = 0,
+ * nbar(xi) = n_s - sum_i N_i(xi) n_i (the averaged normal of the slave node's normal and the
+ * face nodes' `normals`; with zero `normals` the ray along n_s), by Newton's method from `xi`.
+ * Empty if Newton does not converge to a step below 1e-14 in 20 iterations or the root lies outside
+ * the face (beyond 1e-12).
  */
 template <int dim>
 std::optional<double> normal_ray_point(const QuadraticFace<dim>& face,
@@ -61,32 +66,39 @@ std::optional<double> normal_ray_point(const QuadraticFace<dim>& face,
 }
 
 /**
- * Sets `pair`'s masters, weights and normal from `faces` of `master_surface` at `displacement`,
- * with the slave node's current normal `slave_normal` and the master surface's nodal normals
- * `master_normals` there: the master point is where the ray from the slave node along the
- * averaged normal meets a face (the nearest such point), else the closest point of the faces.
+ * Moves `pair`'s master point onto `faces` of `master_surface` at `displacement`: to where the
+ * ray from the slave node along nbar(face, xi) = n_s - sum_i N_i(xi) n_i meets a face (the
+ * nearest such point), else to the closest point of the faces; sets the pair's masters (the
+ * face's nodes) and weights (N_i at the point) and returns nbar there. `master_normals`: the
+ * master surface's nodal normals n_i at `displacement` (update_pairs(): the averaged normal of the
+ * two surfaces, n_s the slave node's normal), or null for a ray along n_s alone
+ * (update_master_points(): n_s the pair's normal, kept).
  */
 template <int dim>
-void project_onto_faces(const ContactSurface<dim>& master_surface,
-                        const std::vector<unsigned int>& faces,
-                        const Vector<double>& displacement,
-                        const Tensor<1, dim>& slave_normal,
-                        const std::vector<Tensor<1, dim>>& master_normals,
-                        ContactPair<dim>& pair)
+Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
+                                 const std::vector<unsigned int>& faces,
+                                 const Vector<double>& displacement,
+                                 const Tensor<1, dim>& n_s,
+                                 const std::vector<Tensor<1, dim>>* master_normals,
+                                 ContactPair<dim>& pair)
 {
+  const auto normals_of = [&](const unsigned int face)
+  {
+    std::array<Tensor<1, dim>, 3> normals; // zero: the ray along n_s alone
+    if (master_normals != nullptr)
+      for (unsigned int i = 0; i < 3; ++i)
+        normals[i] = (*master_normals)[master_surface.face_nodes()[face][i]];
+    return normals;
+  };
   const Point<dim> slave_point = current_position(pair.slave, displacement);
   unsigned int chosen_face     = faces.front();
   double chosen_xi = 0., chosen_distance = std::numeric_limits<double>::max();
   bool on_ray = false;
   for (const unsigned int face : faces)
   {
-    const auto curve       = current_face(master_surface, face, displacement);
-    const auto closest     = curve.closest_point(slave_point);
-    const auto& face_nodes = master_surface.face_nodes()[face];
-    const std::array<Tensor<1, dim>, 3> normals{{master_normals[face_nodes[0]],
-                                                 master_normals[face_nodes[1]],
-                                                 master_normals[face_nodes[2]]}};
-    const auto ray_xi     = normal_ray_point(curve, normals, slave_point, slave_normal, closest.xi);
+    const auto curve      = current_face(master_surface, face, displacement);
+    const auto closest    = curve.closest_point(slave_point);
+    const auto ray_xi     = normal_ray_point(curve, normals_of(face), slave_point, n_s, closest.xi);
     const double xi       = ray_xi ? *ray_xi : closest.xi;
     const double distance = curve.point(xi).distance(slave_point);
     // A point on the ray beats any closest point; among equals, the nearest.
@@ -98,14 +110,43 @@ void project_onto_faces(const ContactSurface<dim>& master_surface,
       on_ray          = bool(ray_xi);
     }
   }
-  const auto weights    = QuadraticFace<dim>::shape_values(chosen_xi);
-  Tensor<1, dim> normal = slave_normal;
+  const auto weights  = QuadraticFace<dim>::shape_values(chosen_xi);
+  const auto normals  = normals_of(chosen_face);
+  Tensor<1, dim> nbar = n_s;
   pair.masters.clear();
   for (unsigned int i = 0; i < 3; ++i)
   {
-    const unsigned int node = master_surface.face_nodes()[chosen_face][i];
-    pair.masters.push_back({master_surface.nodes()[node], weights[i]});
-    normal -= weights[i] * master_normals[node];
+    pair.masters.push_back(
+        {master_surface.nodes()[master_surface.face_nodes()[chosen_face][i]], weights[i]});
+    nbar -= weights[i] * normals[i];
+  }
+  return nbar;
+}
+
+/**
+ * Sets `pair`'s masters, weights and normal from `faces` of `master_surface` at `displacement`,
+ * with the slave node's current normal `slave_normal` and the master surface's nodal normals
+ * `master_normals` there: the master point is where the ray from the slave node along the
+ * averaged normal meets a face (the nearest such point), else the closest point of the faces;
+ * the normal is the averaged normal there. Throws SolverFailure if that vanishes.
+ */
+template <int dim>
+void project_onto_faces(const ContactSurface<dim>& master_surface,
+                        const std::vector<unsigned int>& faces,
+                        const Vector<double>& displacement,
+                        const Tensor<1, dim>& slave_normal,
+                        const std::vector<Tensor<1, dim>>& master_normals,
+                        ContactPair<dim>& pair)
+{
+  const Tensor<1, dim> normal =
+      move_master_point(master_surface, faces, displacement, slave_normal, &master_normals, pair);
+  if (!(normal.norm() >= least_averaged_normal)) // also for NaN
+  {
+    std::ostringstream where;
+    where << pair.slave.position;
+    throw SolverFailure("node-to-segment contact: the slave node at " + where.str() +
+                        " (reference position) does not face the master surface (its outward "
+                        "normal equals the master surface's there).");
   }
   pair.normal = normal / normal.norm();
 }
@@ -142,8 +183,15 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
     ContactPair<dim> pair;
     pair.slave             = slave_nodes[i];
     pair.penalty_stiffness = penalty_stiffness_per_area * slave_areas[i];
-    project_onto_faces(
-        this->master_surface, faces, undeformed, slave_normals[i], master_normals, pair);
+    try
+    {
+      project_onto_faces(
+          this->master_surface, faces, undeformed, slave_normals[i], master_normals, pair);
+    }
+    catch (const SolverFailure& failure) // at the reference configuration: the input's fault
+    {
+      throw InputError(failure.what());
+    }
     Point<dim> closest_point;
     for (const MasterNode<dim>& master : pair.masters)
       closest_point += master.weight * master.node.position;
@@ -177,6 +225,19 @@ void NodeToSegmentContact<dim>::update_pairs(const Vector<double>& displacement,
                        slave_normals[slave_node_of_pair[k]],
                        master_normals,
                        pairs[k]);
+}
+
+template <int dim>
+void NodeToSegmentContact<dim>::update_master_points(const Vector<double>& displacement,
+                                                     std::vector<ContactPair<dim>>& pairs) const
+{
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    move_master_point<dim>(master_surface,
+                           candidate_faces_of_pair[k],
+                           displacement,
+                           pairs[k].normal,
+                           nullptr,
+                           pairs[k]);
 }
 
 template <int dim>

@@ -131,7 +131,8 @@ void Simulation<dim>::build_contact_and_solver()
                                                  fixed_dofs,
                                                  parameters.newton,
                                                  GridTools::minimal_cell_diameter(triangulation),
-                                                 timer);
+                                                 timer,
+                                                 integrator.alpha_f());
 }
 
 template <int dim>

@@ -28,11 +28,12 @@ struct ContactNewtonSolver<dim>::Iteration
   };
 
   const typename DynamicResidual<dim>::Step step;
-  Vector<double>& increment; ///< u - u~, the caller's vector
-  Vector<double> displacement = {};
-  bool active_set_changed     = false;
-  bool restarted              = false;
-  unsigned int linear_solves  = 0;
+  Vector<double>& increment;              ///< u - u~, the caller's vector
+  Vector<double> last_configuration = {}; ///< u_n
+  Vector<double> displacement       = {};
+  bool active_set_changed           = false;
+  bool restarted                    = false;
+  unsigned int linear_solves        = 0;
   /** Backtracking line search: the state before the last update, the update and its fraction. */
   std::optional<StateBeforeUpdate> before_update = {};
   /** Modified Newton: the active set at which this step's tangent was assembled (empty: none). */
@@ -57,11 +58,12 @@ ContactNewtonSolver<dim>::ContactNewtonSolver(
     const std::vector<types::global_dof_index>& fixed_dofs,
     const NewtonParameters& parameters,
     const double length_scale,
-    TimerOutput& timer)
+    TimerOutput& timer,
+    const double alpha_f)
     : contact(contact), parameters(parameters),
       gap_tolerance((parameters.residual_tolerance + DynamicResidual<dim>::roundoff_factor) *
                     length_scale),
-      timer(timer), n_dofs(dof_handler.n_dofs()),
+      timer(timer), alpha_f(alpha_f), n_dofs(dof_handler.n_dofs()),
       system(dof_handler, contact, fixed_dofs, parameters.direct_solver),
       residual(bodies, contact, lumped_mass, fixed_dofs)
 {
@@ -76,6 +78,8 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
                                 Vector<double>& increment)
 {
   Iteration iteration{{predictor, inertia_factor, external_force}, increment};
+  iteration.last_configuration = predictor;
+  iteration.last_configuration += restart_increment;
   // A pair enters when the unconstrained predicted gap is negative.
   enter(iteration);
   // The first evaluation of a step (the initial guess, which often is the answer, e.g. in free
@@ -159,8 +163,22 @@ void ContactNewtonSolver<dim>::enter(Iteration& iteration)
 {
   iteration.displacement = iteration.step.predictor;
   iteration.displacement += iteration.increment;
+  move_master_points(iteration);
   iteration.active_set_changed =
       contact.update_active_set(iteration.displacement, gap_tolerance, 0.);
+}
+
+template <int dim>
+void ContactNewtonSolver<dim>::move_master_points(const Iteration& iteration)
+{
+  if (alpha_f == 0.)
+  {
+    contact.update_master_points(iteration.displacement);
+    return;
+  }
+  Vector<double> configuration = iteration.displacement;
+  configuration.sadd(1. - alpha_f, alpha_f, iteration.last_configuration);
+  contact.update_master_points(configuration);
 }
 
 template <int dim>
@@ -283,6 +301,7 @@ void ContactNewtonSolver<dim>::move_along_update(Iteration& iteration, const dou
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
     multiplier_increment[k] = length * iteration.newton_update[n_dofs + k];
   contact.add_multiplier_increment(multiplier_increment);
+  move_master_points(iteration);
   iteration.active_set_changed = contact.update_active_set(
       iteration.displacement, gap_tolerance, parameters.residual_tolerance * reference_force);
 }

@@ -31,7 +31,9 @@ namespace dyncontact
  * Normals are fixed unless the pairs come from a ContactGeometry (NodeToNodeContact): then
  * update_geometry() moves them (normals and, for node-to-segment pairs, master points) to a
  * configuration; the time loop calls it at the start of every step with u_n, and the step's
- * Newton solve, rate correction and measures keep those pairs (see ContactGeometry).
+ * Newton solve, rate correction and measures keep those normals (see ContactGeometry). The
+ * master points of node-to-segment pairs follow the Newton iterates (update_master_points()), so
+ * that the rate correction and measures see those of the converged configuration.
  *
  * It does not choose time steps, know the integrator, assemble elasticity or solve linear systems.
  */
@@ -42,7 +44,11 @@ public:
   /** Pairs with fixed normals (bars, a rigid wall). */
   ContactConstraints(std::vector<ContactPair<dim>> pairs, ContactFormulation formulation);
 
-  /** The pairs of `geometry`, which follow the current configuration (update_geometry()). */
+  /**
+   * The pairs of `geometry`, which follow the current configuration (update_geometry()). The
+   * geometry must have at least one pair and finite normals (its constructor's InputError sees to
+   * it; AssertThrow otherwise).
+   */
   ContactConstraints(const ContactGeometry<dim>& geometry, ContactFormulation formulation);
 
   /**
@@ -50,6 +56,13 @@ public:
    * (ContactGeometry::update_pairs()). Does nothing for fixed pairs.
    */
   void update_geometry(const Vector<double>& displacement);
+
+  /**
+   * For pairs of a ContactGeometry: moves every pair's master point to `displacement`, its normal
+   * kept (ContactGeometry::update_master_points(); the Newton solver calls it at every iterate).
+   * Does nothing for fixed pairs.
+   */
+  void update_master_points(const Vector<double>& displacement);
 
   unsigned int n_pairs() const { return pairs.size(); }
   ContactFormulation contact_formulation() const { return formulation; }

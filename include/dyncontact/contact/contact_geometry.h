@@ -17,8 +17,10 @@ namespace dyncontact
  * pressure a set of nodal multipliers represents. The family: NodeToNodeContact (matching
  * meshes, one facing node per slave node) and node-to-segment contact (the slave node projected
  * onto a master face). ContactConstraints enforces the pairs; it calls update_pairs() once per
- * converged configuration, so that within a time step the pairs are those of u_n and the gap is
- * linear in u (an exact Newton tangent).
+ * converged configuration, so that within a time step the normals are those of u_n, and
+ * update_master_points() at every Newton iterate, so that a master point that is not a material
+ * point (node-to-segment) is that of the configuration the step ends in (doc/method.md, section
+ * 4.1).
  *
  * The number of pairs and each pair's slave node never change; the master nodes, weights and
  * normal may (update_pairs()), within the DoFs coupled_dofs() declares, from which the sparsity
@@ -41,6 +43,19 @@ public:
    */
   virtual void update_pairs(const Vector<double>& displacement,
                             std::vector<ContactPair<dim>>& pairs) const = 0;
+
+  /**
+   * Moves the master point (master nodes and weights) of every pair of `pairs` (as given by
+   * pairs(), same order) to the configuration `displacement`, keeping the pair's normal: the point
+   * of the master surface on the line through the slave node along the normal. Called at every
+   * Newton iterate of a step, whose normals stay those of u_n. This default leaves the pairs as
+   * they are: right where the master point is a material point (node-to-node: the facing node) or
+   * fixed (a rigid plane).
+   */
+  virtual void update_master_points(const Vector<double>& /*displacement*/,
+                                    std::vector<ContactPair<dim>>& /*pairs*/) const
+  {
+  }
 
   /**
    * Every DoF the constraint row of pair `k` may couple to over the run (the slave node's and

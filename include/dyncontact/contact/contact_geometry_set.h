@@ -23,6 +23,8 @@ public:
   const std::vector<ContactPair<dim>>& pairs() const override { return all_pairs; }
   void update_pairs(const Vector<double>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
+  void update_master_points(const Vector<double>& displacement,
+                            std::vector<ContactPair<dim>>& pairs) const override;
   std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;
   std::vector<double> contact_pressures(const Vector<double>& displacement,
                                         const std::vector<double>& multipliers) const override;
@@ -32,5 +34,9 @@ private:
   std::vector<ContactPair<dim>> all_pairs;
   /** first_pair[m]: index in all_pairs of member m's first pair; last entry: all_pairs.size(). */
   std::vector<unsigned int> first_pair;
+
+  /** Calls update(member, own pairs) for every member with its part of `pairs`, written back. */
+  template <typename Update>
+  void update_members(std::vector<ContactPair<dim>>& pairs, const Update& update) const;
 };
 } // namespace dyncontact

@@ -17,12 +17,17 @@ namespace dyncontact
  * mirror-image meshes of the paper's two spheres: the candidate pairs and, for a displacement,
  * their current normals and contact pressures.
  *
- * Pairing (reference configuration): with e the unit vector from body A's centroid to body B's,
- * every node of surface A whose outward normal n_A satisfies n_A . e >= 1/2 (it faces B, within
- * 60 degrees) is paired with the node of surface B that faces A (n_B . e <= -1/2) and lies
- * across from it: the one nearest in the directions orthogonal to e. The two must coincide in those
- * directions to `matching_tolerance`; otherwise the meshes do not match and the constructor throws
- * InputError. Both vertex and mid-side nodes of Q2 faces take part.
+ * Pairing (reference configuration): with e the approach direction, a unit vector from surface A
+ * toward surface B, every node of surface A whose outward normal n_A satisfies n_A . e >= 1/2 (it
+ * faces B, within 60 degrees) is paired with the node of surface B that faces A (n_B . e <= -1/2)
+ * and lies across from it: the one nearest in the directions orthogonal to e. The two must
+ * coincide in those directions to `matching_tolerance`; otherwise the meshes do not match and the
+ * constructor throws InputError. Both vertex and mid-side nodes of Q2 faces take part. e is the
+ * direction from the centroid of surface A's nodes to that of surface B's (curved surfaces such as
+ * the paper's spheres), or, for two flat surfaces (parallel normals: rod ends, a flat punch, block
+ * on block) and for surfaces whose centroids coincide (flat faces touching at t = 0), the
+ * difference of their area-weighted mean outward normals, normalized: a centroid direction would
+ * be 0/0 for coincident faces and along the faces for a punch off the centre.
  *
  * Current normal of a pair: n = (n_A - n_B) / |n_A - n_B| with the current outward nodal normals of
  * ContactSurface; it points from A toward B and is the common normal of the two surfaces where they
@@ -53,7 +58,10 @@ public:
    * `touching_tolerance` are the same point: the pair's node B is given node A's position, so
    * that its reference gap is exactly zero, whatever the normal, and the pair starts closed. A
    * pair whose reference gap is below -`touching_tolerance` means that the bodies overlap: the
-   * constructor throws InputError, with the overlap and where it is.
+   * constructor throws InputError, with the overlap and where it is. Also InputError if the
+   * surfaces give no approach direction (flat surfaces whose normals point the same way; surfaces
+   * with a common centroid whose mean normals do not face each other) or no node of surface A
+   * faces surface B (no candidate pair): never a contact without pairs or with a NaN normal.
    */
   NodeToNodeContact(ContactSurface<dim> surface_a,
                     ContactSurface<dim> surface_b,

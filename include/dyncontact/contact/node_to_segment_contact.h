@@ -37,8 +37,12 @@ namespace dyncontact
  * meets its mirror node (xi at that node, weight 1 up to round-off), also while the pair is open,
  * so both discretizations give the same active sets (the ctest
  * cli.node_to_segment_matches_node_to_node_on_matching_meshes). As in NodeToNodeContact, the
- * pairs are those of the last converged configuration within a time step (the gap is linear in
- * u; Newton's tangent is exact for it); the rows n N_i leave out the change of xi and n with u.
+ * normals are those of the last converged configuration within a time step. The master point
+ * follows the Newton iterates (update_master_points(): along the held normal), so that the step's
+ * constraint and contact forces are those of its own configuration: held at u_n too, a sliding
+ * slave node's gap jumped at every re-projection, and an antisymmetric sliding mode of two flat
+ * rod ends grew from round-off (doc/method.md, section 4.1). The rows n N_i leave out the change
+ * of xi and n with u (Newton converges linearly while a slave node slides).
  *
  * Penalty stiffness of a pair: `penalty_stiffness_per_area` [force/length^3] times the slave
  * node's lumped reference area (ContactSurface::lumped_areas(), 2 pi r weighted in axisymmetry).
@@ -61,7 +65,9 @@ public:
    * interpolation, which the tolerance must cover for touching bodies to start closed. A pair
    * whose reference gap is below -`touching_tolerance` means overlap: InputError naming both
    * bodies, where and how much. Also InputError if no slave node lies within `search_radius` of
-   * the master surface; AssertThrow if a face does not have three nodes (not Q2).
+   * the master surface (no candidate pair), or if a candidate's averaged normal vanishes (its
+   * outward normal equals the master surface's: no normal, never a NaN one); AssertThrow if a face
+   * does not have three nodes (not Q2).
    */
   NodeToSegmentContact(ContactSurface<dim> slave_surface,
                        ContactSurface<dim> master_surface,
@@ -74,10 +80,20 @@ public:
 
   /**
    * Sets each pair's masters, weights and normal by projecting its slave node onto its candidate
-   * faces at `displacement` (a whole vector in the DoFHandler's numbering).
+   * faces at `displacement` (a whole vector in the DoFHandler's numbering). Throws SolverFailure
+   * if a pair's averaged normal vanishes there (a step that deformed the surfaces that far).
    */
   void update_pairs(const Vector<double>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
+
+  /**
+   * Moves each pair's master point, its normal n kept, to where the line through its slave node
+   * along n meets its candidate faces at `displacement` (the nearest such point; else the closest
+   * point of the faces): within a time step the gap n . (x(xi) - x_s) is then measured to the
+   * master face, not to a material point of it.
+   */
+  void update_master_points(const Vector<double>& displacement,
+                            std::vector<ContactPair<dim>>& pairs) const override;
 
   /** The slave node's DoFs and those of every node of the pair's candidate faces. */
   std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;

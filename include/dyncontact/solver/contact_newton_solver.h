@@ -31,7 +31,12 @@ namespace dyncontact
  * and closed, inactive pairs open), and, if any pair is active, at least one linear solve was
  * made. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment. The pairs' normals
  * are those the contact layer holds on entry (the last converged configuration's); the solver
- * never moves them, so the constraint rows are linear in u and the tangent is exact.
+ * never moves them. It moves the master points (ContactConstraints::update_master_points();
+ * node-to-segment pairs only, doc/method.md section 4.1) at every iterate u to the configuration
+ * whose forces the step balances, (1 - alpha_f) u + alpha_f u_n (Newmark: u itself), so that
+ * the step's contact forces are those of its own configuration; the tangent leaves out the change
+ * of the master points' weights with u (a quasi-Newton step there, converging linearly;
+ * node-to-node and fixed pairs keep rows linear in u and an exact tangent).
  *
  * Initial guess: the residual is first evaluated at the given guess (the Newmark predictor),
  * without the tangent (using the diagonal of the last tangent for the force scale), so that steps
@@ -74,7 +79,9 @@ public:
    * activation and constraint convergence (without the floor a tolerance of 1e-16 asked for gaps
    * below the round-off of the positions: measured 8.9e-16 left vs 3.2e-17 asked).
    * `timer` receives the phases "assembly", "factorization", "low-rank update" (of the factors,
-   * SaddlePointSystem::update_factorization()) and "linear solve" (with the factors).
+   * SaddlePointSystem::update_factorization()) and "linear solve" (with the factors). `alpha_f`
+   * in [0, 1): the integrator's weight of u_n in the configuration its balance holds at,
+   * GeneralizedAlpha::alpha_f() (0: Newmark); the master points are taken there.
    */
   ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
                       const ElasticBodies<dim>& bodies,
@@ -83,7 +90,8 @@ public:
                       const std::vector<types::global_dof_index>& fixed_dofs,
                       const NewtonParameters& parameters,
                       double length_scale,
-                      TimerOutput& timer);
+                      TimerOutput& timer,
+                      double alpha_f = 0.);
 
   /**
    * Solves the step, with external forces W at t_{n+1}, for the increment u_{n+1} - u~ over the
@@ -132,8 +140,14 @@ private:
   /** An evaluation of the residual: its figures, or the message of the failure that stopped it. */
   struct Evaluation;
 
-  /** Sets the displacement to predictor + increment and updates the active set there. */
+  /**
+   * Sets the displacement to predictor + increment and updates the master points
+   * (move_master_points()) and the active set there.
+   */
   void enter(Iteration& iteration);
+
+  /** Moves the pairs' master points to the iterate's (1 - alpha_f) u + alpha_f u_n. */
+  void move_master_points(const Iteration& iteration);
 
   /** Newton starts again from `restart_increment` (the last converged configuration). */
   void restart(Iteration& iteration, const Vector<double>& restart_increment);
@@ -177,6 +191,7 @@ private:
   const NewtonParameters parameters;
   const double gap_tolerance;
   TimerOutput& timer;
+  const double alpha_f;
   const types::global_dof_index n_dofs;
   SaddlePointSystem<dim> system;
   DynamicResidual<dim> residual;
