@@ -8,6 +8,10 @@
 #   striker (bar 2 at E = 1e4); the Signorini bar (10 periods); the spheres (default prm, paper's
 #   dt), the coarse spheres at dt = 0.02 and the dissimilar spheres.
 # A run that fails is reported in its cells with its error line. About 10 minutes.
+# Then the whole-kind sweep of issue 25, item 7 (bench/schemes_sweep.py: the stiff striker at
+# impedance ratios 1e2 to 1e6 and dt 0.1 to 0.005, the coarse spheres at dt 0.03 to 0.0025) for the
+# schemes in SWEEP (default: the default and mass redistribution; SWEEP= skips it), about 10 minutes
+# more: bench/results/schemes/sweep.md.
 #   bench/schemes.sh                       (every scheme)
 #   SCHEMES="persistency none" RESULTS=/tmp/subset bench/schemes.sh   (a subset, elsewhere)
 #   SCHEMES="taylor-papadopoulos@generalized-alpha:0.8" bench/schemes.sh   (on a dissipative
@@ -56,3 +60,7 @@ for scheme in "${schemes[@]}"; do
   run dissimilar_spheres "$scheme" prm/dissimilar_spheres.prm
 done
 /usr/bin/python3 bench/schemes_report.py "$results" "${schemes[@]}"
+read -r -a sweep <<<"${SWEEP-taylor-papadopoulos@generalized-alpha:0.8 mass-redistribution}"
+if [ ${#sweep[@]} -gt 0 ]; then
+  /usr/bin/python3 bench/schemes_sweep.py build/dyncontact "$results" "${sweep[@]}"
+fi

@@ -931,6 +931,19 @@ void GuardParameters::declare_parameters(ParameterHandler& prm)
                     "Allowed difference, relative to the run's largest momentum magnitude, the sum "
                     "of |m v| over every node and direction (not the net momentum, which is zero "
                     "for a free vibration) [-], 0..1.");
+  prm.declare_entry(
+      "contact event tolerance",
+      "1e-4",
+      Patterns::Double(),
+      "With massless contact nodes (Contact/dynamics = mass-redistribution) only: a step in "
+      "which pairs close or open is cut while the work of these events exceeds this fraction of "
+      "the energy [-], 0..1 (1 never cuts): (1/2) the new force times the gap at the step's start "
+      "for a closing pair, (1/2) the old force times the gap at its end for an opening one. With "
+      "massless contact nodes the bodies do not impact, the contact force rises and falls "
+      "elastically, and the event work is the time discretization's energy error at the events "
+      "(the trapezoidal rule loses exactly the closing work and gains exactly the opening work), "
+      "which each halving divides by about 4 (by 2 where the force drops abruptly). At the "
+      "smallest step (Time integration/maximum step cuts) the step is accepted.");
   prm.leave_subsection();
 }
 
@@ -944,6 +957,7 @@ void GuardParameters::parse_parameters(ParameterHandler& prm)
   tensile_force_tolerance = get_in_range(prm, "tensile force tolerance", "Guards", 0., 1.);
   momentum                = prm.get_bool("momentum");
   momentum_tolerance      = get_in_range(prm, "momentum tolerance", "Guards", 0., 1.);
+  contact_event_tolerance = get_in_range(prm, "contact event tolerance", "Guards", 0., 1.);
   prm.leave_subsection();
 }
 

@@ -328,6 +328,21 @@ double ContactConstraints<dim>::total_pair_force() const
   return total;
 }
 
+template <int dim>
+double ContactConstraints<dim>::event_work(const Vector<double>& old_displacement,
+                                           const Vector<double>& new_displacement,
+                                           const State& old) const
+{
+  double work = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k] && !old.active[k])
+      work += 0.5 * pair_force(k) * std::max(0., gap(k, old_displacement));
+    else if (!active[k] && old.active[k])
+      work +=
+          0.5 * force_per_multiplier * old.multipliers[k] * std::max(0., gap(k, new_displacement));
+  return work;
+}
+
 template class ContactConstraints<1>;
 template class ContactConstraints<2>;
 } // namespace dyncontact

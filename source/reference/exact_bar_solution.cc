@@ -28,9 +28,24 @@ bool StepFunction::update(const double t, const double new_value, const double t
   const double current_value = values.empty() ? initial_value : values.back();
   if (std::abs(new_value - current_value) <= threshold)
     return false;
+  running_integral.push_back(
+      times.empty() ? 0. : running_integral.back() + (t - times.back()) * values.back());
   times.push_back(t);
   values.push_back(new_value);
   return true;
+}
+
+double StepFunction::antiderivative(const double t) const
+{
+  if (times.empty() || t < times.front())
+    return (t - (times.empty() ? 0. : times.front())) * initial_value;
+  const std::size_t k = std::upper_bound(times.begin(), times.end(), t) - times.begin() - 1;
+  return running_integral[k] + (t - times[k]) * values[k];
+}
+
+double StepFunction::integral(const double lower, const double upper) const
+{
+  return antiderivative(upper) - antiderivative(lower);
 }
 } // namespace internal
 
@@ -296,23 +311,12 @@ std::pair<double, double> ExactBarSolution::invariants(const Bar& bar,
 double ExactBarSolution::displacement(const unsigned int bar, const double X, const double t) const
 {
   const Bar& b = checked_point(bar, X, t);
-  // The invariants at X jump when a jump emitted at an end has travelled to X.
+  // u = integral over [0, t] of v = (R + L)/2, the invariants arriving from the ends with their
+  // travel delays.
   const double delay_from_left  = (X - b.data.left_end) / b.wave_speed;
   const double delay_from_right = (b.data.left_end + b.data.length - X) / b.wave_speed;
-  const double no_limit         = std::numeric_limits<double>::infinity();
-  std::vector<double> jump_times;
-  for (const double emission : breakpoints_between(b.right_going, -no_limit, t - delay_from_left))
-    jump_times.push_back(emission + delay_from_left);
-  for (const double emission : breakpoints_between(b.left_going, -no_limit, t - delay_from_right))
-    jump_times.push_back(emission + delay_from_right);
-  return integrate_piecewise_constant(0.0,
-                                      t,
-                                      jump_times,
-                                      [&](const double s)
-                                      {
-                                        const auto [R, L] = invariants(b, X, s, 0.0);
-                                        return 0.5 * (R + L);
-                                      });
+  return 0.5 * (b.right_going.integral(-delay_from_left, t - delay_from_left) +
+                b.left_going.integral(-delay_from_right, t - delay_from_right));
 }
 
 double ExactBarSolution::velocity(const unsigned int bar, const double X, const double t) const
@@ -335,11 +339,7 @@ double ExactBarSolution::contact_force(const unsigned int interface, const doubl
 
 double ExactBarSolution::contact_impulse(const unsigned int interface, const double t) const
 {
-  const internal::StepFunction& force = checked_interface(interface).force;
-  return integrate_piecewise_constant(0.0,
-                                      t,
-                                      breakpoints_between(force, 0.0, t),
-                                      [&](const double s) { return force.value(s, 0.0); });
+  return checked_interface(interface).force.integral(0.0, t);
 }
 
 bool ExactBarSolution::in_contact(const unsigned int interface, const double t) const

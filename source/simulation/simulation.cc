@@ -882,6 +882,8 @@ Simulation<dim>::solve_step(const State& before, Measures& measures, unsigned in
       const StepGuards::Figures figures = guard_figures(measures);
       failure                           = guards.check(figures);
       if (failure.empty())
+        failure = contact_event_failure(before, figures.energy);
+      if (failure.empty())
       {
         guards.accept(figures);
         guarded_energy    = figures.energy;
@@ -896,6 +898,26 @@ Simulation<dim>::solve_step(const State& before, Measures& measures, unsigned in
     restore(before);
     cut_after_failure(failure);
   }
+}
+
+template <int dim>
+std::string Simulation<dim>::contact_event_failure(const State& before, const double energy) const
+{
+  // With massless contact nodes the bodies do not impact: a pair's force rises and falls
+  // elastically, and the step's energy error at a closing or a release is the event work.
+  // Resolve the event by halving the step while it is above its tolerance. With massive contact
+  // nodes part of the closing loss is the semi-discrete impact's own, which no step size
+  // removes, so the control is for massless nodes only.
+  if (!contact_dynamics->contact_nodes_massless() || !controller->can_cut() ||
+      parameters.guards.contact_event_tolerance >= 1.)
+    return "";
+  const double work = contact->event_work(before.displacement, displacement, before.contact);
+  if (!(work > parameters.guards.contact_event_tolerance * std::abs(energy)))
+    return "";
+  return "contact event work " + format_number(work / std::abs(energy)) +
+         " of the energy, above Guards/contact event tolerance = " +
+         format_number(parameters.guards.contact_event_tolerance) +
+         " (a pair closed or opened within the step)";
 }
 
 template <int dim>

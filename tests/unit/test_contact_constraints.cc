@@ -112,6 +112,39 @@ TEST(ContactConstraints, ActiveSetEntersOnPenetrationAndLeavesOnTension)
   EXPECT_TRUE(contact.is_active(3));
   EXPECT_FALSE(contact.update_active_set(closed, 1e-6, 1e-6));
 }
+// The event work of a step (ContactConstraints::event_work()): (1/2) F_{n+1} g(u_n) for a pair that
+// closed and (1/2) F_n g(u_{n+1}) for one that opened, nothing for a pair that stayed closed or
+// open. Three wall pairs, by hand: pair 0 closes across the gap 0.02 with force 3 (work 0.03),
+// pair 1 opens to the gap 0.01 from force 4 (work 0.02), pair 2 stays closed (force 5, gap 0).
+// Exact in binary up to the round-off of the sums (bound 1e-15).
+TEST(ContactConstraints, EventWorkIsHalfTheForceTimesTheGapTheEventCrosses)
+{
+  const Tensor<1, 2> up({0., 1.});
+  std::vector<ContactPair<2>> pairs;
+  for (unsigned int k = 0; k < 3; ++k)
+    pairs.push_back(toy_pair(toy_node(k, Point<2>(k, 0.)), {}, up, Point<2>(k, 0.)));
+  ContactConstraints<2> contact(pairs, ContactFormulation::lagrange_multiplier);
+  // The step's start: pair 0 open at the gap 0.02, pairs 1 and 2 closed with forces 4 and 5.
+  Vector<double> old_u(6), new_u(6);
+  old_u[1] = -0.02;
+  Vector<double> old_multipliers(3);
+  old_multipliers[1] = 4., old_multipliers[2] = 5.;
+  const typename ContactConstraints<2>::State old{{false, true, true}, old_multipliers};
+  // Its end: pair 0 closed with force 3, pair 1 open at the gap 0.01, pair 2 still closed.
+  new_u[3]                   = -0.01;
+  Vector<double> penetrating = new_u;
+  penetrating[1] = 1e-3, penetrating[5] = 1e-3;
+  contact.update_active_set(penetrating, 1e-6, 0.);
+  Vector<double> multipliers(3);
+  multipliers[0] = 3., multipliers[2] = 5.;
+  contact.add_multiplier_increment(multipliers);
+  ASSERT_TRUE(contact.is_active(0) && !contact.is_active(1) && contact.is_active(2));
+  EXPECT_NEAR(contact.event_work(old_u, new_u, old), 0.5 * 3. * 0.02 + 0.5 * 4. * 0.01, 1e-15);
+  // The force per multiplier scales both (the alpha members report f lambda).
+  contact.set_force_per_multiplier(0.5);
+  EXPECT_NEAR(contact.event_work(old_u, new_u, old), 0.5 * (0.03 + 0.02), 1e-15);
+}
+
 // Penalty springs against the time step: omega dt = dt sqrt(k / m_r), m_r = m_a m_b / (m_a + m_b)
 // for a node pair and m_a against a wall, computed here by hand (masses 2 and 6: m_r = 1.5; wall
 // node mass 4). Contact/penalty factor = auto lowers every spring by the one factor that puts the

@@ -139,6 +139,8 @@ struct GuardParameters
   double tensile_force_tolerance;
   bool momentum;
   double momentum_tolerance;
+  /// massless contact nodes: the largest contact event work of a step per unit of energy (0..1)
+  double contact_event_tolerance;
 
   static void declare_parameters(ParameterHandler& prm);
   void parse_parameters(ParameterHandler& prm);

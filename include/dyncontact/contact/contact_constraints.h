@@ -193,6 +193,21 @@ public:
   /** Sum of pair_force() over the pairs [force]. */
   double total_pair_force() const;
 
+  /**
+   * The work of the contact events of a step [force x length], from the state `old` at u_n
+   * (`old_displacement`) to the current one at u_{n+1} (`new_displacement`): (1/2) sum over the
+   * pairs that closed (active now, not in `old`) of pair_force() times the gap g_k(u_n), plus
+   * (1/2) sum over the pairs that opened (active in `old`, not now) of their old force
+   * force_per_multiplier lambda_k,n times the gap g_k(u_{n+1}) (positive parts). With massless
+   * contact nodes (mass redistribution) on the trapezoidal rule these are exactly the energy the
+   * step loses at the closings and gains at the releases, for linear elasticity and gaps: the
+   * step's energy change is (1/2) sum_k (lambda_k,n + lambda_k,n+1)(g_k,n+1 - g_k,n)
+   * (doc/schemes.md, "Mass redistribution with resolved contact events").
+   */
+  double event_work(const Vector<double>& old_displacement,
+                    const Vector<double>& new_displacement,
+                    const State& old) const;
+
   /** The largest penetration max(0, -g) over all candidate pairs at `displacement`. */
   double max_penetration(const Vector<double>& displacement) const;
 

@@ -53,6 +53,12 @@ public:
    */
   bool update(double t, double new_value, double threshold);
 
+  /**
+   * The integral of the function over [@p lower, @p upper] (lower <= upper), in O(log n) from
+   * the running integral kept at the breakpoints.
+   */
+  double integral(double lower, double upper) const;
+
   /// The times at which the value changes, increasing.
   const std::vector<double>& breakpoints() const { return times; }
 
@@ -60,9 +66,14 @@ public:
   const std::vector<double>& values_from_breakpoints() const { return values; }
 
 private:
+  /// The integral from the first breakpoint (t = 0 without breakpoints) to @p t.
+  double antiderivative(double t) const;
+
   double initial_value;
   std::vector<double> times;
   std::vector<double> values;
+  /// The integral from the first breakpoint to each breakpoint.
+  std::vector<double> running_integral;
 };
 } // namespace internal
 

@@ -211,6 +211,12 @@ private:
    * solves of all attempts. Throws SolverFailure when the smallest step still fails.
    */
   unsigned int solve_step(const State& before, Measures& measures, unsigned int& cuts);
+  /**
+   * With massless contact nodes: why the solved step from `before` must be cut to resolve a
+   * closing or a release (ContactConstraints::event_work() above Guards/contact event tolerance
+   * times |`energy`|), or an empty string (also at the smallest step size).
+   */
+  std::string contact_event_failure(const State& before, double energy) const;
   /** Halves the step after `failure`, logs it; throws SolverFailure at the smallest step. */
   void cut_after_failure(std::string failure);
   /** Writes a checkpoint when due; on a signal also the results, then throws RunInterrupted. */

@@ -43,6 +43,8 @@ public:
 
   /** The next step failed: halves its size. Returns false (and changes nothing) at the minimum. */
   bool cut();
+  /** Whether the next step is above the smallest size, dt / 2^max_cuts (cut() would succeed). */
+  bool can_cut() const { return level < max_cuts; }
 
   /** Writes or reads the position (checkpoints); the nominal grid comes from the constructor. */
   template <class Archive>
