@@ -232,13 +232,14 @@ TEST(FlatFaces, DeclaredPairWithoutCandidatesIsAnInputErrorNamingThePair)
 //    bar's (measured 20.3);
 //  - the mean contact force over [2, 18] (the plateau, after the first ringing) within 1 % of
 //    rho c0 A v / 2 = 0.3927: the ringing about the plateau (period about 2 pi R / c ~ 3) averages
-//    out over the window (measured -0.15 %);
+//    out over the window (measured -0.11 %; -0.15 % on the previous default, generalized-alpha);
 //  - total momentum conserved to 1e-10 of the striker's (no external force; Newton's round-off);
 //    at the end rod 2 carries the striker's momentum and rod 1 none, each within 3 % of it: the
 //    dispersed tail of the wave leaves rod 1 a little of it (measured 1.8 %), which a bar does not;
 //  - the energy never above its start by more than the energy guard's tolerance (1e-4), and at
-//    the end within 1 % below it (the default integrator dissipates the highest modes; measured
-//    -0.19 %).
+//    the end within 1 % below it (measured +2.3e-6: the default, mass redistribution on the
+//    trapezoidal rule, conserves it but for the release's opening work, which Guards/contact
+//    event tolerance bounds; -0.19 % on the previous default, which dissipated the highest modes).
 TEST(FlatFaces, RodsTouchingAtTheStartGiveTheOneDimensionalImpact)
 {
   const MeshRun run         = run_mesh_case("prm/rods_flat_ends.prm");
@@ -290,12 +291,12 @@ TEST(FlatFaces, NodeToSegmentBetweenFlatEndsConservesEnergyAndMatchesNodeToNode)
   EXPECT_LE(largest_relative_difference(history, node.history()), 1e-6);
 }
 
-// Shared case 22, command A (the default integrator, generalized-alpha rho_inf = 0.8; the end
-// faces touching) to t = 14: held master points stopped it at t = 13.8 (energy guard, exit 3),
-// and master points taken at u_{n+1} instead of the configuration the balance holds at,
-// u_{n+1-alpha_f}, at t = 18.35. It completes, its energy never above the start (the member
-// dissipates), and the rods as a whole as node-to-node's (shared case 21) to 1e-6 (measured
-// 1.6e-8, contact force; the momenta 4e-11).
+// Shared case 22, command A (the default scheme; the end faces touching) to t = 14. On the previous
+// default, generalized-alpha rho_inf = 0.8, held master points stopped it at t = 13.8 (energy
+// guard, exit 3), and master points taken at u_{n+1} instead of the configuration the balance
+// holds at, u_{n+1-alpha_f}, at t = 18.35. On the default (mass redistribution, trapezoidal rule)
+// it completes, its energy never above the start beyond round-off (1e-9; measured 5.6e-15), and
+// the rods as a whole as node-to-node's (shared case 21) to 1e-6 (measured 4.6e-13).
 TEST(FlatFaces, NodeToSegmentBetweenTouchingFlatEndsMatchesNodeToNodeOnTheDefaultIntegrator)
 {
   const auto run = [](const std::string& discretization)
@@ -308,8 +309,14 @@ TEST(FlatFaces, NodeToSegmentBetweenTouchingFlatEndsMatchesNodeToNodeOnTheDefaul
   const MeshRun node     = run("node-to-node");
   const History& history = segment.history();
   ASSERT_NEAR(history.value(history.n_rows() - 1, "time"), 14., 1e-9);
+  double largest_gain = 0.;
   for (unsigned int row = 1; row < history.n_rows(); ++row)
-    EXPECT_LE(history.value(row, "total_energy"), history.value(0, "total_energy"));
-  EXPECT_LE(largest_relative_difference(history, node.history()), 1e-6);
+    largest_gain = std::max(
+        largest_gain, history.value(row, "total_energy") / history.value(0, "total_energy") - 1.);
+  const double difference = largest_relative_difference(history, node.history());
+  std::cout << "  touching rods, default scheme: largest energy gain " << largest_gain
+            << ", node-to-segment against node-to-node " << difference << "\n";
+  EXPECT_LE(largest_gain, 1e-9);
+  EXPECT_LE(difference, 1e-6);
 }
 } // namespace dyncontact::testing
