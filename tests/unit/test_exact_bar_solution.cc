@@ -293,7 +293,8 @@ TEST(ExactBarSolution, RejectsBadInput)
   expect_invalid_argument(
       {unit_bar(-10.0, 1.0), unit_bar(-1.0, 0.0)}, {}, 1.0, "bar 0 overlaps bar 1");
   expect_invalid_argument({unit_bar(-10.0, 1.0)}, -1.0, 1.0, "bar 0 reaches beyond the wall");
-  expect_invalid_argument({unit_bar(-10.0, 1.0)}, {}, 0.0, "end_time");
+  expect_invalid_argument(
+      {unit_bar(-10.0, 1.0)}, {}, -1.0, "end_time"); // 0 is allowed: the reference at t = 0
 
   const ExactBarSolution solution({unit_bar(-10.0, 1.0)}, {}, 1.0);
   EXPECT_THROW(solution.velocity(0, -5.0, 1.5), std::out_of_range);

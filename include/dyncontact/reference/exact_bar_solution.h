@@ -115,7 +115,8 @@ public:
    * holds the left end of the leftmost bar at rest (v = 0 there from t = 0 on, so a wave leaves it
    * at once if that bar moves: the incoming L is reflected as R = -L). Throws
    * std::invalid_argument for non-positive length, Young's modulus, density or area, for
-   * overlapping bars, for a wall left of a bar's right end and for a non-positive end time.
+   * overlapping bars, for a wall left of a bar's right end and for a negative end time (0: the
+   * solution at t = 0 alone, the reference of a run that failed its first step).
    */
   ExactBarSolution(const std::vector<ExactBar>& bars,
                    std::optional<double> wall_position,
