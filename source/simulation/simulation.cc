@@ -908,8 +908,9 @@ std::string Simulation<dim>::contact_event_failure(const State& before, const do
   // Resolve the event by halving the step while it is above its tolerance. With massive contact
   // nodes part of the closing loss is the semi-discrete impact's own, which no step size
   // removes, so the control is for massless nodes only.
+  // Without energy (bodies at rest) there is no scale to resolve the events to.
   if (!contact_dynamics->contact_nodes_massless() || !controller->can_cut() ||
-      parameters.guards.contact_event_tolerance >= 1.)
+      parameters.guards.contact_event_tolerance >= 1. || energy == 0.)
     return "";
   const double work = contact->event_work(before.displacement, displacement, before.contact);
   if (!(work > parameters.guards.contact_event_tolerance * std::abs(energy)))
