@@ -96,36 +96,26 @@ void prepare_run_directory(const dyncontact::ParameterReader& reader, const std:
       });
 }
 
-/** Runs the simulation of `model` in `dim` dimensions; its phases' wall times go to `record`. */
+/**
+ * Runs the simulation of `model` in `dim` dimensions. Everything a run checks before its first
+ * step is done before the output directory is touched, so that an input error leaves an earlier
+ * run's results in place; then the directory is prepared, and the run is recorded in run.json.
+ */
 template <int dim>
-void simulate(const dyncontact::RunParameters& parameters,
+void simulate(const dyncontact::ParameterReader& reader,
               std::unique_ptr<dyncontact::ProblemModel<dim>> model,
               const dyncontact::CommandLine& command_line,
-              dyncontact::RunRecord* record)
-{
-  dyncontact::Simulation<dim> simulation(parameters, std::move(model), std::cout);
-  simulation.set_progress(!command_line.quiet);
-  try
-  {
-    simulation.run(command_line.resume_directory);
-  }
-  catch (...)
-  {
-    if (record != nullptr)
-      record->set_wall_times(simulation.wall_times());
-    throw;
-  }
-  if (record != nullptr)
-    record->set_wall_times(simulation.wall_times());
-}
-
-/** A run of the parameter file, or the resumption of an interrupted one, recorded in run.json. */
-void run(const dyncontact::CommandLine& command_line, const std::vector<std::string>& arguments)
+              const std::vector<std::string>& arguments)
 {
   using namespace dyncontact;
-  const ParameterReader reader(command_line.parameter_file, command_line.overrides);
   const RunParameters& parameters = reader.parameters();
-  print_warnings(parameters);
+  Simulation<dim> simulation(parameters, std::move(model), std::cout);
+  simulation.set_progress(!command_line.quiet);
+  if (command_line.resume_directory.empty())
+  {
+    check_output_directory(parameters.output.directory);
+    simulation.prepare();
+  }
   prepare_run_directory(reader, command_line.resume_directory);
   std::unique_ptr<RunRecord> record; // rank 0 only
   on_root_rank(
@@ -138,24 +128,39 @@ void run(const dyncontact::CommandLine& command_line, const std::vector<std::str
       });
   try
   {
-    if (parameters.problem.geometry == GeometryKind::bars)
-      simulate<1>(
-          parameters, std::make_unique<BarModel>(parameters.geometry), command_line, record.get());
-    else
-      simulate<2>(parameters,
-                  std::make_unique<AxisymmetricMeshModel>(
-                      parameters.mesh, parameters.bodies, parameters.contact.pairs),
-                  command_line,
-                  record.get());
+    simulation.run(command_line.resume_directory);
   }
   catch (...)
   {
     if (record)
+    {
+      record->set_wall_times(simulation.wall_times());
       record->finish(RunOutcome::of(std::current_exception()));
+    }
     throw;
   }
   if (record)
+  {
+    record->set_wall_times(simulation.wall_times());
     record->finish({0, "completed", "", 0});
+  }
+}
+
+/** A run of the parameter file, or the resumption of an interrupted one, recorded in run.json. */
+void run(const dyncontact::CommandLine& command_line, const std::vector<std::string>& arguments)
+{
+  using namespace dyncontact;
+  const ParameterReader reader(command_line.parameter_file, command_line.overrides);
+  const RunParameters& parameters = reader.parameters();
+  print_warnings(parameters);
+  if (parameters.problem.geometry == GeometryKind::bars)
+    simulate<1>(reader, std::make_unique<BarModel>(parameters.geometry), command_line, arguments);
+  else
+    simulate<2>(reader,
+                std::make_unique<AxisymmetricMeshModel>(
+                    parameters.mesh, parameters.bodies, parameters.contact.pairs),
+                command_line,
+                arguments);
 }
 } // namespace
 

@@ -822,8 +822,11 @@ void Simulation<dim>::read_checkpoint(const std::string& directory)
 template <int dim>
 void Simulation<dim>::prepare()
 {
+  if (prepared)
+    return;
   setup();
   set_initial_conditions();
+  prepared = true;
 }
 
 template <int dim>

@@ -71,7 +71,8 @@ public:
    * Everything run() does before its first step, writing no file: builds the mesh, DoFs, bodies,
    * contact candidates and monitor nodes, sizes an automatic penalty, checks the time step against
    * the stability limit and sets the initial conditions. Throws the InputError a run would throw;
-   * `--validate` calls it. run() calls it first.
+   * `--validate` calls it, and the program before it clears an earlier run's results. run() calls
+   * it first unless it was called already (it does its work once).
    */
   void prepare();
 
@@ -269,6 +270,8 @@ private:
   Vector<double> mass;
   /** ElasticBodies::highest_frequency_bound() of the bodies with their fixed DoFs [1/time]. */
   double highest_frequency = 0.;
+  /** Whether prepare() has done its work. */
+  bool prepared = false;
   std::vector<types::global_dof_index> fixed_dofs;
   std::unique_ptr<SurfaceTractions<dim>> loads;
   Vector<double> external_force;                         ///< W at the current time
