@@ -51,7 +51,7 @@ bool StepController::accept()
 
 bool StepController::cut()
 {
-  if (level == max_cuts)
+  if (!can_cut())
     return false;
   ++level;
   accepted_at_level = 0;
