@@ -64,7 +64,7 @@ void validate(const dyncontact::CommandLine& command_line)
   using namespace dyncontact;
   const ParameterReader reader(command_line.parameter_file, command_line.overrides);
   print_warnings(reader.parameters());
-  check_run_setup(reader.parameters());
+  check_run_setup(reader.parameters(), std::cout);
   if (!command_line.resume_directory.empty())
     check_checkpoint_exists(command_line.resume_directory);
   std::cout << "dyncontact: " << command_line.parameter_file << " is valid.\n";
@@ -82,10 +82,7 @@ void prepare_run_directory(const dyncontact::ParameterReader& reader, const std:
       {
         const std::string& directory = reader.parameters().output.directory;
         if (!resume.empty())
-        {
-          check_checkpoint_exists(resume);
           return;
-        }
         prepare_output_directory(directory);
         const unsigned int n_removed = remove_previous_results(directory);
         if (n_removed > 0)
@@ -112,10 +109,10 @@ void simulate(const dyncontact::ParameterReader& reader,
   Simulation<dim> simulation(parameters, std::move(model), std::cout);
   simulation.set_progress(!command_line.quiet);
   if (command_line.resume_directory.empty())
-  {
     check_output_directory(parameters.output.directory);
-    simulation.prepare();
-  }
+  simulation.prepare();
+  if (!command_line.resume_directory.empty())
+    simulation.check_checkpoint(command_line.resume_directory);
   prepare_run_directory(reader, command_line.resume_directory);
   std::unique_ptr<RunRecord> record; // rank 0 only
   on_root_rank(
@@ -135,6 +132,7 @@ void simulate(const dyncontact::ParameterReader& reader,
     if (record)
     {
       record->set_wall_times(simulation.wall_times());
+      record->set_summary_status(simulation.summary_status());
       record->finish(RunOutcome::of(std::current_exception()));
     }
     throw;
@@ -142,6 +140,7 @@ void simulate(const dyncontact::ParameterReader& reader,
   if (record)
   {
     record->set_wall_times(simulation.wall_times());
+    record->set_summary_status(simulation.summary_status());
     record->finish({0, "completed", "", 0});
   }
 }

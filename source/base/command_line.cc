@@ -7,13 +7,17 @@ namespace dyncontact
 CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
 {
   CommandLine command_line;
-  bool action_given     = false;
-  const auto set_action = [&](const Action action)
+  bool action_given = false;
+  std::string action_option; // the option that chose the action, for the messages
+  const auto set_action = [&](const Action action, const std::string& option)
   {
     if (action_given && command_line.action != action)
-      throw InputError("conflicting options; see --help.");
+      throw InputError("conflicting options " + action_option + " and " + option +
+                       ": give one of --help, --version, --print-parameters, --validate; see "
+                       "--help.");
     command_line.action = action;
     action_given        = true;
+    action_option       = option;
   };
   const auto value_of = [&](unsigned int& i) -> const std::string&
   {
@@ -26,17 +30,24 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
   {
     const std::string& argument = arguments[i];
     if (argument == "--help" || argument == "-h")
-      set_action(Action::help);
+      set_action(Action::help, argument);
     else if (argument == "--print-parameters")
     {
-      set_action(Action::print_parameters);
-      if (i + 1 < arguments.size() && (arguments[i + 1] == "bars" || arguments[i + 1] == "mesh"))
+      set_action(Action::print_parameters, argument);
+      // An optional kind: any word that is not an option is one, and must be a known kind.
+      if (i + 1 < arguments.size() && !arguments[i + 1].empty() && arguments[i + 1][0] != '-')
+      {
         command_line.template_kind = arguments[++i];
+        if (command_line.template_kind != "bars" && command_line.template_kind != "mesh")
+          throw InputError("--print-parameters " + command_line.template_kind +
+                           ": unknown kind of problem; the kinds are bars (1D bars, the default) "
+                           "and mesh (axisymmetric bodies from a gmsh mesh).");
+      }
     }
     else if (argument == "--version")
-      set_action(Action::version);
+      set_action(Action::version, argument);
     else if (argument == "--validate") // the parameter file may come before or after it
-      set_action(Action::validate);
+      set_action(Action::validate, argument);
     else if (argument == "--set")
       command_line.overrides.push_back(value_of(i));
     else if (argument == "--output")
@@ -64,14 +75,14 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
     throw InputError("--resume DIR continues in DIR; do not give --output or Output/directory "
                      "with it.");
   if (!action_given && !command_line.parameter_file.empty())
-    set_action(Action::run);
+    set_action(Action::run, command_line.parameter_file);
   if (!action_given && !command_line.overrides.empty())
     throw InputError("no parameter file given; see --help.");
   if ((command_line.action == Action::help || command_line.action == Action::version ||
        command_line.action == Action::print_parameters) &&
       !command_line.parameter_file.empty())
     throw InputError("conflicting options: a parameter file ('" + command_line.parameter_file +
-                     "') is given with --help, --version or --print-parameters; see --help.");
+                     "') is given with " + action_option + ", which takes none; see --help.");
   if ((command_line.action == Action::run || command_line.action == Action::validate) &&
       command_line.parameter_file.empty())
     throw InputError("no parameter file given; see --help.");
@@ -96,15 +107,16 @@ std::string CommandLine::usage()
          "  dyncontact --print-parameters [bars|mesh]   (bars if not given)\n"
          "      print a parameter file for that kind of problem with every entry it takes,\n"
          "      its documentation, default and allowed values; it runs as printed (bars: one\n"
-         "      bar at rest; mesh: two spheres at rest in the shipped meshes/two_spheres.geo,\n"
-         "      with one contact pair). Save it, edit it, run it.\n"
+         "      bar at rest; mesh: the paper's two spheres approaching each other in the\n"
+         "      shipped meshes/two_spheres.geo, one contact pair, 6 s). Save it, edit it, run it.\n"
          "  dyncontact --version\n"
          "      print the version and the git commit of the build.\n"
          "  dyncontact --help\n"
          "\n"
          "A run writes into Output/directory: history.csv (one row per step), the reference\n"
-         "solution (exact.csv for bars, hertz.csv and impact_summary.csv for two identical\n"
-         "spheres), profile_t<T>.csv (and contact_pressure_t<T>.csv, cells.csv for meshes),\n"
+         "solution (exact.csv for bars; hertz.csv and impact_summary.csv for a head-on impact\n"
+         "of a sphere or a spherical end), profile_t<T>.csv (and contact_pressure_t<T>.csv, "
+         "cells.csv for meshes),\n"
          "solution_*.vtu with solution.pvd (and contact_surface_*.vtu, contact_surface.pvd),\n"
          "original.prm (the input as given), parameters.prm (every value in effect, re-runnable\n"
          "from any directory) and run.json (version, commit, command line, times, outcome). It\n"

@@ -100,7 +100,11 @@ std::string readable_entry_error(const std::string& message, const std::string& 
   std::smatch match;
   if (std::regex_match(message, match, unknown_subsection))
   {
-    const std::string name = match[2];
+    // deal.II names a nested subsection with '.' separators ("Contact.Pair 2"): shown with the
+    // '/' of every other message, judged by its last part.
+    std::string path = match[2];
+    std::replace(path.begin(), path.end(), '.', '/');
+    const std::string name = path.substr(path.rfind('/') + 1);
     const std::string why =
         name == "Geometry"                   ? "it is for Problem/geometry = bars"
         : name == "Mesh" || name == "Bodies" ? "it is for Problem/geometry = axisymmetric mesh"
@@ -108,7 +112,7 @@ std::string readable_entry_error(const std::string& message, const std::string& 
         : name.rfind("Body ", 0) == 0        ? "there are only Bodies/number of bodies bodies"
         : name.rfind("Pair ", 0) == 0        ? "there are only Contact/number of pairs pairs"
                                              : "no such subsection is declared";
-    return "line " + std::string(match[1]) + ": subsection '" + name + "' is not taken: " + why +
+    return "line " + std::string(match[1]) + ": subsection '" + path + "' is not taken: " + why +
            " (dyncontact --print-parameters bars|mesh prints what each kind of problem takes).";
   }
   if (std::regex_match(message, match, value_from_set))
@@ -479,11 +483,14 @@ void BodyParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry(
       "Poisson's ratio", "0.3", Patterns::Double(-1., 0.5), "nu [-], -1 < nu < 0.5.", true);
   prm.declare_entry("density", "1", Patterns::Double(), "rho [mass/length^3], > 0.", true);
-  prm.declare_entry("monitor point",
-                    "0, 0",
-                    Patterns::List(Patterns::Double(), 2, 2),
-                    "(r, z) of the point whose nearest node of this body is reported in the "
-                    "history as u_tip_<b>, v_tip_<b>, a_tip_<b> (axial components).");
+  prm.declare_entry(
+      "monitor point",
+      "",
+      Patterns::Anything(),
+      "(r, z) [length] of the point whose nearest node of this body is reported in "
+      "the history as u_tip_<b>, v_tip_<b>, a_tip_<b> (axial components); it must lie "
+      "in the body or within one cell of it. Empty: the body's centroid on the axis "
+      "(0, z_c), the centre of a sphere.");
   prm.enter_subsection("Initial velocity");
   Functions::ParsedFunction<2>::declare_parameters(prm, 2);
   prm.leave_subsection();
@@ -501,10 +508,20 @@ void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& 
   if (!(poissons_ratio > -1. && poissons_ratio < 0.5))
     throw InputError(section + "/Poisson's ratio = " + prm.get("Poisson's ratio") +
                      " is not allowed: it must satisfy -1 < nu < 0.5.");
-  density                              = get_positive(prm, "density", section);
-  const std::vector<std::string> point = Utilities::split_string_list(prm.get("monitor point"));
-  monitor_point =
-      Point<2>(Utilities::string_to_double(point[0]), Utilities::string_to_double(point[1]));
+  density                      = get_positive(prm, "density", section);
+  const std::string point_text = Utilities::trim(prm.get("monitor point"));
+  monitor_point.reset();
+  if (!point_text.empty())
+  {
+    const std::vector<std::string> point = Utilities::split_string_list(point_text);
+    if (point.size() != 2 || !Patterns::Double().match(point[0]) ||
+        !Patterns::Double().match(point[1]))
+      throw InputError(section + "/monitor point = '" + point_text +
+                       "' is not a point: give r, z (two numbers), or leave it empty for the "
+                       "body's centroid.");
+    monitor_point =
+        Point<2>(Utilities::string_to_double(point[0]), Utilities::string_to_double(point[1]));
+  }
   initial_velocity = parse_function(prm, "Initial velocity", section);
   surface_traction = parse_function(prm, "Surface traction", section);
 }
@@ -1133,14 +1150,17 @@ void OutputParameters::declare_parameters(ParameterHandler& prm)
                     "frame at every step with active contact pairs, cut steps included, so that "
                     "every contact is seen however short; surface contact also writes "
                     "contact_surface.pvd (pressure, gap and active flag on the slave surfaces).");
-  prm.declare_entry("checkpoint interval",
-                    "0",
-                    Patterns::Integer(),
-                    "Write checkpoint.bin (the whole state: u, v, a, multipliers, active set, step "
-                    "size, time, history) every this many steps [-], 0..1e8; 0 = only when the run "
-                    "is interrupted (SIGINT or SIGTERM finish the current step, write a checkpoint "
-                    "and stop). `dyncontact FILE.prm --resume DIR` continues from it; the history "
-                    "equals that of an uninterrupted run.");
+  prm.declare_entry(
+      "checkpoint interval",
+      "0",
+      Patterns::Integer(),
+      "Write checkpoint.bin (the whole state: u, v, a, multipliers, active set, step "
+      "size, time, history) every this many steps [-], 0..1e8; 0 = only when the run "
+      "is interrupted (SIGINT or SIGTERM finish the current step, write a checkpoint "
+      "and stop). `dyncontact FILE.prm --resume DIR` continues from it; the history "
+      "equals that of an uninterrupted run. A run that reaches its end time keeps "
+      "checkpoint.bin only if it holds the end state (resume it with a later end time "
+      "to extend the run), else removes it.");
   prm.declare_entry("write exact solution",
                     "true",
                     Patterns::Bool(),
@@ -1381,15 +1401,29 @@ void ParameterReader::print_template(std::ostream& out, const std::string& kind)
   apply_override(prm, "Problem/geometry=" + geometry_names().name(size.geometry), false);
   if (mesh)
     // meshes/two_spheres.geo: physical surfaces 1, 2 are the spheres, curves 2, 3 their surfaces.
-    for (const char* text : {"Mesh/file=" DYNCONTACT_MESH_DIRECTORY "/two_spheres.geo",
-                             "Bodies/number of bodies=2",
-                             "Contact/number of pairs=1",
-                             "Contact/Pair 1/slave boundary=2",
-                             "Contact/Pair 1/master boundary=3"})
+    // The paper's spheres (section 6.4: R = 8, E = 5e3, rho = 0.001, speeds +-1) on the coarse
+    // graded mesh, 0.4 apart: they touch at t = 0.2 and part at about 0.28 (Hertz).
+    for (const char* text :
+         {"Mesh/file=" DYNCONTACT_MESH_DIRECTORY "/two_spheres.geo",
+          "Mesh/geo parameters=CentreDistance: 16.4, PoleGrading: 10, CoreOffset: 0.3",
+          "Bodies/number of bodies=2",
+          "Bodies/Body 1/Young's modulus=5e3",
+          "Bodies/Body 2/Young's modulus=5e3",
+          "Bodies/Body 1/density=0.001",
+          "Bodies/Body 2/density=0.001",
+          "Bodies/Body 1/Initial velocity/Function expression=0; 1",
+          "Bodies/Body 2/Initial velocity/Function expression=0; -1",
+          "Contact/number of pairs=1",
+          "Contact/Pair 1/slave boundary=2",
+          "Contact/Pair 1/master boundary=3",
+          "Time integration/time step=0.0025",
+          "Time integration/end time=0.35"})
       apply_override(prm, text, false);
   out << "# A dyncontact parameter file for " << (mesh ? "axisymmetric mesh" : "bars")
       << " problems, printed by dyncontact --print-parameters " << kind
-      << ": every entry with its default.\n# It runs as it is; edit the values. "
+      << ": every entry, at its default"
+      << (mesh ? " except the problem's (the paper's two spheres approaching each other)" : "")
+      << ".\n# It runs as it is; edit the values. "
          "(--print-parameters "
       << (mesh ? "bars" : "mesh") << " prints the other kind.)\n";
   prm.print_parameters(out, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);

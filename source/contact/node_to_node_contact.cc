@@ -150,7 +150,8 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
                      body_a + " that face " + body_b + " have no node of " + body_b +
                      " across from them (first at " + first_unmatched.str() +
                      "): node-to-node contact needs matching (e.g. mirrored) meshes of the facing "
-                     "surfaces.");
+                     "surfaces; for meshes that do not match, set Contact/discretization = "
+                     "node-to-segment.");
 }
 
 template <int dim>

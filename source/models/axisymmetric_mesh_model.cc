@@ -29,6 +29,7 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
   std::vector<double> lowest_z(n_bodies(), std::numeric_limits<double>::max());
   std::vector<double> highest_z(n_bodies(), std::numeric_limits<double>::lowest());
   std::vector<std::vector<Point<2>>> boundary_vertices(n_bodies());
+  largest_cell_diameter.assign(n_bodies(), 0.);
   shortest_edge      = std::numeric_limits<double>::max();
   largest_coordinate = 0.;
   for (const auto& cell : triangulation.active_cell_iterators())
@@ -39,6 +40,7 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
                        std::to_string(body + 1) +
                        " but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
     ++cells_of_body[body];
+    largest_cell_diameter[body] = std::max(largest_cell_diameter[body], cell->diameter());
     for (unsigned int line = 0; line < cell->n_lines(); ++line)
       shortest_edge = std::min(shortest_edge, cell->line(line)->diameter());
     for (const unsigned int v : cell->vertex_indices())
@@ -58,23 +60,29 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
       throw InputError("Mesh/file = '" + mesh.file + "' has no cells of body " +
                        std::to_string(body + 1) + " (physical surface " + std::to_string(body + 1) +
                        "), but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
-  n_cells = triangulation.n_active_cells();
-  body_heights.clear();
-  for (unsigned int body = 0; body < n_bodies(); ++body)
-    body_heights.push_back(highest_z[body] - lowest_z[body]);
+  n_cells        = triangulation.n_active_cells();
+  body_lowest_z  = lowest_z;
+  body_highest_z = highest_z;
   // Volumes of revolution, 2 pi r over each cell in the Q2 mapping of the manifolds.
   const MappingQ<2> mapping(2);
   const FE_Q<2> linear(1);
   FEValues<2> cell_values(
       mapping, linear, QGauss<2>(4), update_quadrature_points | update_JxW_values);
   body_volumes.assign(n_bodies(), 0.);
+  body_centroid_z.assign(n_bodies(), 0.);
   for (const auto& cell : triangulation.active_cell_iterators())
   {
     cell_values.reinit(cell);
     for (const unsigned int q : cell_values.quadrature_point_indices())
-      body_volumes[cell->material_id()] +=
-          2. * numbers::PI * cell_values.quadrature_point(q)[0] * cell_values.JxW(q);
+    {
+      const Point<2>& point = cell_values.quadrature_point(q);
+      const double volume   = 2. * numbers::PI * point[0] * cell_values.JxW(q);
+      body_volumes[cell->material_id()] += volume;
+      body_centroid_z[cell->material_id()] += point[1] * volume;
+    }
   }
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+    body_centroid_z[body] /= body_volumes[body];
   closest_boundary_vertices = std::numeric_limits<double>::max();
   if (n_bodies() == 2)
     for (const Point<2>& vertex_0 : boundary_vertices[0])
@@ -184,7 +192,8 @@ double AxisymmetricMeshModel::search_radius() const
   // more generous than the spheres' R / 4: a flat face has no curvature to bound the contact).
   const std::optional<SphereGeometry> sphere_0 = geometry.sphere(0), sphere_1 = geometry.sphere(1);
   if (!sphere_0 || !sphere_1)
-    return closest_boundary_vertices + 0.25 * std::min(body_heights[0], body_heights[1]);
+    return closest_boundary_vertices + 0.25 * std::min(body_highest_z[0] - body_lowest_z[0],
+                                                       body_highest_z[1] - body_lowest_z[1]);
   const double distance = std::abs(sphere_1->centre[1] - sphere_0->centre[1]);
   const double gap      = std::max(0., distance - sphere_0->radius - sphere_1->radius);
   return gap + 0.25 * std::min(sphere_0->radius, sphere_1->radius);
@@ -205,7 +214,26 @@ std::vector<Node<2>> AxisymmetricMeshModel::monitor_nodes(const NodeIndex<2>& no
 {
   std::vector<Node<2>> monitors;
   for (unsigned int body = 0; body < n_bodies(); ++body)
-    monitors.push_back(nodes.closest_node(body, bodies.bodies[body].monitor_point));
+  {
+    const std::optional<Point<2>>& given = bodies.bodies[body].monitor_point;
+    const Point<2> point                 = given.value_or(Point<2>(0., body_centroid_z[body]));
+    monitors.push_back(nodes.closest_node(body, point));
+    if (!given)
+      continue;
+    // Inside a cell of the body a point is within that cell's diameter of one of its nodes.
+    const double distance = point.distance(monitors.back().position);
+    if (distance > largest_cell_diameter[body])
+      throw InputError(
+          "Bodies/Body " + std::to_string(body + 1) + "/monitor point = " +
+          ("(" + format_number(point[0]) + ", " + format_number(point[1]) + ")") + " is " +
+          format_number(distance) + " from the nearest node of body " + std::to_string(body + 1) +
+          " at " +
+          ("(" + format_number(monitors.back().position[0]) + ", " +
+           format_number(monitors.back().position[1]) + ")") +
+          ", farther than its largest cell (" + format_number(largest_cell_diameter[body]) +
+          "): give a point in the body (r >= 0, z within " + format_number(body_lowest_z[body]) +
+          ".." + format_number(body_highest_z[body]) + ").");
+  }
   return monitors;
 }
 
@@ -240,10 +268,10 @@ AxisymmetricMeshModel::impact_side(const types::boundary_id id) const
   const BoundaryCurve* curve = geometry.curve(id);
   if (curve == nullptr)
     return std::nullopt;
-  if (curve->circle && geometry.sphere(curve->body))
-    return ImpactSide{curve->circle, 0., curve->body};
+  if (curve->circle)
+    return ImpactSide{curve->circle, 0., curve->body, geometry.sphere(curve->body).has_value()};
   if (curve->line && std::abs(std::abs(curve->line->second[1]) - 1.) <= 1e-12)
-    return ImpactSide{std::nullopt, curve->line->first[1], curve->body};
+    return ImpactSide{std::nullopt, curve->line->first[1], curve->body, false};
   return std::nullopt;
 }
 
@@ -257,7 +285,7 @@ std::optional<AxisymmetricMeshModel::HeadOnImpact> AxisymmetricMeshModel::head_o
   if (pair.master_boundary)
     second = impact_side(*pair.master_boundary);
   else if (std::abs(std::abs(pair.rigid_plane->second[1]) - 1.) <= 1e-12)
-    second = ImpactSide{std::nullopt, pair.rigid_plane->first[1], std::nullopt};
+    second = ImpactSide{std::nullopt, pair.rigid_plane->first[1], std::nullopt, false};
   if (!first || !second)
     return std::nullopt;
   if (!first->sphere)
@@ -280,9 +308,21 @@ std::optional<AxisymmetricMeshModel::HeadOnImpact> AxisymmetricMeshModel::head_o
                (second->sphere ? second->sphere->radius : 0.);
   if (approach_speed <= 0. || gap < -touching_tolerance())
     return std::nullopt;
+  // A spherical end is Hertz's only where its pole, on the axis, is the body's extreme point
+  // toward the other side (a cap, not a ring cut from a circle or a concave seat).
+  const auto pole_faces = [&](const ImpactSide& side, const double toward)
+  {
+    if (!side.sphere || side.whole_sphere)
+      return true;
+    const double pole    = side.sphere->centre[1] + toward * side.sphere->radius;
+    const double extreme = toward > 0. ? body_highest_z[*side.body] : body_lowest_z[*side.body];
+    return std::abs(pole - extreme) <= touching_tolerance();
+  };
+  if (!pole_faces(*first, direction) || !pole_faces(*second, -direction))
+    return std::nullopt;
   if (gap <= touching_tolerance())
     gap = 0.;
-  return HeadOnImpact{*first, *second, approach_speed, gap};
+  return HeadOnImpact{*first, *second, approach_speed, gap, direction};
 }
 
 ElasticSphere AxisymmetricMeshModel::elastic_sphere(const unsigned int body,
@@ -290,6 +330,13 @@ ElasticSphere AxisymmetricMeshModel::elastic_sphere(const unsigned int body,
 {
   const BodyParameters& parameters = bodies.bodies[body];
   return {sphere.radius, parameters.youngs_modulus, parameters.poissons_ratio, parameters.density};
+}
+
+double AxisymmetricMeshModel::spherical_side_mass(const ImpactSide& side) const
+{
+  const BodyParameters& body = bodies.bodies[*side.body];
+  return side.whole_sphere ? sphere_mass(elastic_sphere(*side.body, *side.sphere))
+                           : body.density * body_volumes[*side.body];
 }
 
 ElasticFlatBody AxisymmetricMeshModel::flat_body(const ImpactSide& side) const
@@ -308,19 +355,37 @@ std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
     return std::nullopt;
   const ElasticSphere sphere = elastic_sphere(*impact->sphere.body, *impact->sphere.sphere);
   const double touch         = impact->gap / impact->approach_speed;
-  if (impact->other.sphere)
-    return HertzImpact::two_spheres(sphere,
-                                    elastic_sphere(*impact->other.body, *impact->other.sphere),
-                                    impact->approach_speed,
-                                    touch);
-  return HertzImpact::sphere_on_flat(
-      sphere, flat_body(impact->other), impact->approach_speed, touch);
+  if (impact->sphere.whole_sphere && (!impact->other.sphere || impact->other.whole_sphere))
+  {
+    if (impact->other.sphere)
+      return HertzImpact::two_spheres(sphere,
+                                      elastic_sphere(*impact->other.body, *impact->other.sphere),
+                                      impact->approach_speed,
+                                      touch);
+    return HertzImpact::sphere_on_flat(
+        sphere, flat_body(impact->other), impact->approach_speed, touch);
+  }
+  // A spherical end: the effective quantities of two_spheres() and sphere_on_flat(), with the
+  // masses of the bodies that carry the ends.
+  const ElasticFlatBody other = flat_body(impact->other);
+  return HertzImpact(
+      impact->other.sphere ? effective_radius(sphere.radius, impact->other.sphere->radius)
+                           : sphere.radius,
+      effective_modulus(
+          sphere.youngs_modulus, sphere.poissons_ratio, other.youngs_modulus, other.poissons_ratio),
+      effective_mass(spherical_side_mass(impact->sphere),
+                     impact->other.sphere ? spherical_side_mass(impact->other) : other.mass),
+      impact->approach_speed,
+      touch);
 }
 
 std::optional<FiniteSphereImpact> AxisymmetricMeshModel::finite_sphere_reference() const
 {
   const std::optional<HeadOnImpact> impact = head_on_impact();
   if (!impact)
+    return std::nullopt;
+  // The law is that of whole spheres.
+  if (!impact->sphere.whole_sphere || (impact->other.sphere && !impact->other.whole_sphere))
     return std::nullopt;
   const ElasticSphere sphere = elastic_sphere(*impact->sphere.body, *impact->sphere.sphere);
   const double touch         = impact->gap / impact->approach_speed;
@@ -387,6 +452,7 @@ void AxisymmetricMeshModel::write_reference(const std::string& directory,
 void AxisymmetricMeshModel::summarize_run(const std::string& directory,
                                           const History& history,
                                           const std::vector<double>& contact_impulses,
+                                          const std::string& status,
                                           std::ostream& log) const
 {
   const auto hertz = hertz_reference();
@@ -399,6 +465,9 @@ void AxisymmetricMeshModel::summarize_run(const std::string& directory,
   }
   const auto law          = finite_sphere_reference();
   const ImpactMeasures fe = measure_impact(history.column("time"), history.column("contact_force"));
+  // The direction along z in which body 1 moves into the contact.
+  const HeadOnImpact impact    = *head_on_impact();
+  const double body_1_approach = impact.sphere.body == 0u ? impact.direction : -impact.direction;
   struct Row
   {
     std::string quantity;
@@ -420,17 +489,20 @@ void AxisymmetricMeshModel::summarize_run(const std::string& directory,
        t0 + hertz->contact_duration(),
        law ? t0 + law_duration : nan},
       {"duration", fe.duration, hertz->contact_duration(), law ? law_duration : nan},
-      // Body 1 moves along +z into the contact, which pushes it back.
-      {"impulse", -contact_impulses[0], hertz->impulse(), law ? law->impulse() : nan},
+      // The contact pushes body 1 back against its motion into the contact.
+      {"impulse",
+       -body_1_approach * contact_impulses[0],
+       hertz->impulse(),
+       law ? law->impulse() : nan},
       {"ringing", fe.ringing, 0., law ? 0. : nan}};
   const auto relative = [](const double computed, const double reference)
   { return reference != 0. ? (computed - reference) / reference : 0.; };
   std::ofstream file(directory + "/impact_summary.csv");
   file << "quantity,computed,hertz,relative_difference"
-       << (law ? ",finite_sphere,finite_sphere_difference" : "") << "\n"
+       << (law ? ",finite_sphere,finite_sphere_difference" : "") << ",status\n"
        << std::setprecision(12);
   log << "  impact against Hertz (computed / Hertz / relative difference"
-      << (law ? " / finite-sphere law / relative difference" : "") << "):\n";
+      << (law ? " / finite-sphere law / relative difference" : "") << "), " << status << ":\n";
   for (const Row& row : rows)
   {
     file << row.quantity << "," << row.computed << "," << row.hertz << ","
@@ -443,7 +515,7 @@ void AxisymmetricMeshModel::summarize_run(const std::string& directory,
       file << "," << row.law << "," << relative(row.computed, row.law);
       log << std::setw(14) << row.law << std::setw(14) << relative(row.computed, row.law);
     }
-    file << "\n";
+    file << "," << status << "\n";
     log << "\n";
   }
 }
@@ -466,5 +538,15 @@ void AxisymmetricMeshModel::print_summary(std::ostream& out, const double time_s
   for (unsigned int body = 0; body < n_bodies(); ++body)
     speed = std::max(speed, dilatational_wave_speed(body));
   out << "  Courant number c_p dt / h_min = " << speed * time_step / shortest_edge << "\n";
+  if (const auto hertz = hertz_reference())
+    out << "  reference: Hertz's head-on impact (hertz.csv, impact_summary.csv): R* = "
+        << hertz->effective_radius() << ", E* = " << hertz->effective_modulus()
+        << ", m* = " << hertz->effective_mass() << ", first touch t = " << hertz->first_touch_time()
+        << ", peak force " << hertz->maximum_force() << ", duration " << hertz->contact_duration()
+        << (finite_sphere_reference() ? "; and the finite-sphere law (finite_sphere.csv)" : "")
+        << "\n";
+  else
+    out << "  reference: none (Hertz needs one pair, a sphere or spherical end facing a sphere or "
+           "a flat face across the axis, the bodies approaching)\n";
 }
 } // namespace dyncontact

@@ -236,6 +236,7 @@ void BarModel::print_summary(std::ostream& out, const double time_step) const
 void BarModel::summarize_run(const std::string& directory,
                              const History& history,
                              const std::vector<double>& contact_impulses,
+                             const std::string& status,
                              std::ostream& log) const
 {
   if (history.n_rows() < 3)
@@ -275,13 +276,14 @@ void BarModel::summarize_run(const std::string& directory,
       {"final_total_energy", history.value(history.n_rows() - 1, "total_energy"), exact_energy});
 
   std::ofstream file(directory + "/exact_summary.csv");
-  file << "quantity,computed,exact,difference,relative_difference\n" << std::setprecision(12);
-  log << "  run against the exact solution (computed / exact / difference):\n";
+  file << "quantity,computed,exact,difference,relative_difference,status\n"
+       << std::setprecision(12);
+  log << "  run against the exact solution (computed / exact / difference), " << status << ":\n";
   for (const Row& row : rows)
   {
     const double difference = row.computed - row.exact;
     file << row.quantity << "," << row.computed << "," << row.exact << "," << difference << ","
-         << (row.exact != 0. ? difference / row.exact : 0.) << "\n";
+         << (row.exact != 0. ? difference / row.exact : 0.) << "," << status << "\n";
     log << "    " << std::left << std::setw(20) << row.quantity << std::right << std::setw(14)
         << row.computed << std::setw(14) << row.exact << std::setw(14) << difference << "\n";
   }

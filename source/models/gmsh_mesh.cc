@@ -371,8 +371,13 @@ std::map<types::boundary_id, CurveFaces> collect_curves(const std::string& filen
       const bool on_axis =
           std::abs(face->vertex(0)[0]) <= tolerance && std::abs(face->vertex(1)[0]) <= tolerance;
       if (id == 0)
-        throw InputError(about(filename) +
-                         "some boundary faces belong to no physical curve; each must be in "
+        throw InputError(about(filename) + "the boundary face of body " +
+                         std::to_string(cell->material_id() + 1) + " from (" +
+                         format_number(face->vertex(0)[0]) + ", " +
+                         format_number(face->vertex(0)[1]) + ") to (" +
+                         format_number(face->vertex(1)[0]) + ", " +
+                         format_number(face->vertex(1)[1]) +
+                         ") (r, z) belongs to no physical curve; each boundary face must be in "
                          "physical curve 1 (axis) or in a physical curve t >= 2 of one body.");
       if (id == SphereMeshIds::axis)
       {
@@ -516,8 +521,10 @@ classify_curve(const std::string& filename, const types::boundary_id id, const C
       (std::isfinite(circle.radius)
            ? ", the best-fit circle, centre z = " + format_number(circle.centre[1]) +
                  " and radius " + format_number(circle.radius) + ", by " +
-                 format_number(circle_deviation) + " (allowed: 1e-6 of the radius)."
-           : "."));
+                 format_number(circle_deviation) + " (allowed: 1e-6 of the radius)"
+           : "") +
+      "; put its straight and circular parts (e.g. a striker's side and its spherical end) in "
+      "physical curves of their own.");
 }
 
 /**

@@ -25,6 +25,7 @@ template <int dim>
 void ProblemModel<dim>::summarize_run(const std::string&,
                                       const History&,
                                       const std::vector<double>&,
+                                      const std::string&,
                                       std::ostream&) const
 {
 }

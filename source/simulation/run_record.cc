@@ -110,6 +110,11 @@ void RunRecord::set_wall_times(std::map<std::string, double> times)
   wall_times = std::move(times);
 }
 
+void RunRecord::set_summary_status(std::string status)
+{
+  summary_status = std::move(status);
+}
+
 void RunRecord::finish(const RunOutcome& run_outcome)
 {
   finished = now_utc();
@@ -143,6 +148,7 @@ bool RunRecord::write() const
        << "},\n  \"outcome\": " << quoted(has_outcome ? outcome.kind : "running")
        << ",\n  \"message\": " << quoted(has_outcome ? outcome.message : "")
        << ",\n  \"exit_code\": " << (has_outcome ? std::to_string(outcome.exit_code) : "null")
+       << ",\n  \"summaries\": " << (summary_status.empty() ? "null" : quoted(summary_status))
        << "\n}\n";
   return static_cast<bool>(file);
 }

@@ -10,16 +10,17 @@ namespace dyncontact
 {
 namespace
 {
-/** Runs Simulation::prepare() for `model`, discarding what it logs. */
+/** Runs Simulation::prepare() for `model`, which logs the set-up to `log`. */
 template <int dim>
-void prepare(const RunParameters& parameters, std::unique_ptr<ProblemModel<dim>> model)
+void prepare(const RunParameters& parameters,
+             std::unique_ptr<ProblemModel<dim>> model,
+             std::ostream& log)
 {
-  std::ostream discard(nullptr);
-  Simulation<dim>(parameters, std::move(model), discard).prepare();
+  Simulation<dim>(parameters, std::move(model), log).prepare();
 }
 } // namespace
 
-void check_run_setup(const RunParameters& parameters)
+void check_run_setup(const RunParameters& parameters, std::ostream& log)
 {
   check_output_directory(parameters.output.directory);
   if (parameters.problem.geometry == GeometryKind::bars)
@@ -27,13 +28,14 @@ void check_run_setup(const RunParameters& parameters)
     auto model = std::make_unique<BarModel>(parameters.geometry);
     if (parameters.output.write_exact_solution)
       model->exact_solution(parameters.time.n_steps() * parameters.time.time_step);
-    prepare<1>(parameters, std::move(model));
+    prepare<1>(parameters, std::move(model), log);
   }
   else
   {
     prepare<2>(parameters,
                std::make_unique<AxisymmetricMeshModel>(
-                   parameters.mesh, parameters.bodies, parameters.contact.pairs));
+                   parameters.mesh, parameters.bodies, parameters.contact.pairs),
+               log);
   }
 }
 } // namespace dyncontact

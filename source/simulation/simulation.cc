@@ -261,7 +261,7 @@ void Simulation<dim>::check_stability() const
         format_number(limit) + " of Newmark with beta = " + format_number(integrator.beta()) +
         ", gamma = " + format_number(integrator.gamma()) +
         "; use a time step <= " + format_largest_step(integrator.time_step() * limit / omega_dt) +
-        ", 2 beta >= gamma" + remedy + ".");
+        ", or 2 beta >= gamma" + remedy + ".");
   };
   // The automatic penalty keeps its springs at omega dt = 1; a softer spring would buy stability
   // with a penetration growing as 1 / (omega dt)^2, so such a time step is refused instead.
@@ -688,8 +688,16 @@ void Simulation<dim>::record_step(const Measures& measures,
 }
 
 template <int dim>
-void Simulation<dim>::write_reference_and_summary()
+void Simulation<dim>::write_reference_and_summary(const std::string& stop)
 {
+  const unsigned int rows = step_history.n_rows();
+  const double last_time  = rows > 0 ? step_history.value(rows - 1, "time") : 0.;
+  summaries               = "complete";
+  if (!stop.empty())
+    summaries = "incomplete: " + stop + " after t = " + format_number(last_time) +
+                " before the end time " + format_number(n_steps * parameters.time.time_step);
+  else if (rows > 0 && step_history.value(rows - 1, "contact_force") != 0.)
+    summaries = "incomplete: still in contact at the end time " + format_number(last_time);
   if (!is_root_rank)
     return;
   const std::string& directory = parameters.output.directory;
@@ -697,7 +705,7 @@ void Simulation<dim>::write_reference_and_summary()
     model->write_reference(directory, step_history.column("time"), monitors);
   // Every accepted row, the sub-steps of cut steps included, and the contact impulses the run
   // accumulated (equal to the momentum changes they caused, see the momentum guard).
-  model->summarize_run(directory, step_history, contact_impulses, log.get_stream());
+  model->summarize_run(directory, step_history, contact_impulses, summaries, log.get_stream());
 }
 
 template <int dim>
@@ -790,10 +798,25 @@ void Simulation<dim>::write_checkpoint()
   }
   // Atomic: a run killed while writing leaves the previous checkpoint intact.
   std::filesystem::rename(file + ".tmp", file);
+  checkpoint_time = time;
 }
 
 template <int dim>
 void Simulation<dim>::read_checkpoint(const std::string& directory)
+{
+  open_checkpoint(directory,
+                  [this](boost::archive::binary_iarchive& archive) { serialize_state(archive); });
+}
+
+template <int dim>
+void Simulation<dim>::check_checkpoint(const std::string& directory)
+{
+  open_checkpoint(directory, [](boost::archive::binary_iarchive&) {});
+}
+
+template <int dim>
+template <class ReadState>
+void Simulation<dim>::open_checkpoint(const std::string& directory, const ReadState& read_state)
 {
   const std::string file = directory + "/checkpoint.bin";
   std::ifstream stream(file, std::ios::binary);
@@ -810,7 +833,7 @@ void Simulation<dim>::read_checkpoint(const std::string& directory)
     if (!difference.empty())
       throw InputError("--resume " + directory +
                        ": the checkpoint belongs to another problem: " + difference + ".");
-    serialize_state(archive);
+    read_state(archive);
   }
   catch (const boost::archive::archive_exception& error)
   {
@@ -857,6 +880,7 @@ void Simulation<dim>::start(const std::string& resume_directory)
   else
   {
     read_checkpoint(resume_directory);
+    checkpoint_time = time;
     if (is_root_rank)
       step_history.attach_file(directory + "/history.csv");
     log << "dyncontact: resumed from " << resume_directory << "/checkpoint.bin at t = " << time
@@ -932,7 +956,7 @@ void Simulation<dim>::cut_after_failure(std::string failure)
   const double failed_size = controller->step_size();
   if (!controller->cut())
   {
-    write_reference_and_summary();
+    write_reference_and_summary("the solve failed");
     throw SolverFailure(
         "step " + std::to_string(controller->nominal_step()) + " (t = " + format_number(time) +
         "): " + failure + ", still at the smallest step " + format_number(failed_size) +
@@ -959,7 +983,7 @@ void Simulation<dim>::checkpoint_or_stop(const bool nominal_time_reached,
     write_checkpoint();
   if (stop)
   {
-    write_reference_and_summary();
+    write_reference_and_summary("interrupted by signal " + std::to_string(signal));
     throw RunInterrupted("signal " + std::to_string(signal) + " at t = " + format_number(time) +
                              ": checkpoint written to " + parameters.output.directory +
                              "/checkpoint.bin",
@@ -994,8 +1018,30 @@ template <int dim>
 void Simulation<dim>::finish()
 {
   write_reference_and_summary();
+  // A checkpoint of the end time can extend the run; one from before (the resumed one, or a
+  // periodic one) could only repeat the finished steps.
+  const std::string checkpoint = parameters.output.directory + "/checkpoint.bin";
+  if (is_root_rank && std::filesystem::exists(checkpoint))
+  {
+    if (checkpoint_time == time)
+      log << "  kept " << checkpoint << ", the state at the end time: --resume it with a later "
+          << "Time integration/end time to extend the run.\n";
+    else
+    {
+      std::filesystem::remove(checkpoint);
+      log << "  removed " << checkpoint << " (the state at t = " << format_number(checkpoint_time)
+          << "): the run is complete, resuming it would only repeat finished steps.\n";
+    }
+  }
   for (const auto& warning : guards.warnings())
     log << warning << "\n";
+  // Contact candidates that never closed: most often a velocity of the wrong sign or a gap the
+  // run is too short to cross (the run is right, but not the problem meant).
+  const std::vector<double> active = step_history.column("active_constraints");
+  if (contact->n_pairs() > 0 &&
+      std::all_of(active.begin(), active.end(), [](double n) { return n == 0.; }))
+    log << "WARNING: no contact pair closed during the run (" << contact->n_pairs()
+        << " candidates): check the initial velocities' directions, the gap and the end time.\n";
   const double wall_time =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - progress.wall_start).count();
   log << "dyncontact: done, " << n_steps << " steps (" << counters.steps_taken << " taken, "

@@ -32,6 +32,7 @@
 #include <iostream>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -521,7 +522,7 @@ TEST(GeneralMeshes, BadBoundaryCurvesGiveOneLine)
                                      "Physical Curve(2) = {1}; Physical Curve(3) = {2};\n"
                                      "Physical Curve(4) = {3};\n")),
       {},
-      "some boundary faces belong to no physical curve");
+      "(r, z) belongs to no physical curve");
 
   // A square on the axis whose axis side is in curve 2, with and without a curve 1 elsewhere
   // (two cells, the lower one's axis side in curve 1).
@@ -595,6 +596,91 @@ TEST(GeneralMeshes, SphereOnBlockHasSphereOnFlatReferences)
   EXPECT_NEAR(law->maximum_force(), expected_law.maximum_force(), 1e-9 * law->maximum_force());
   EXPECT_NEAR(
       law->contact_duration(), expected_law.contact_duration(), 1e-9 * law->contact_duration());
+}
+
+/**
+ * A .geo file of a flat plate (body 1: r <= 4, -2 <= z <= 0, top face curve 3, axis curve 1) and
+ * above it a hemispherical shell (body 2) of outer radius R = 1 and inner radius 0.5 about
+ * (0, `centre_z`), its outer arc (curve 2) facing down if `facing_down`, else up (then its flat
+ * annulus faces the plate): a body whose contact boundary is a spherical end but which is no
+ * sphere.
+ */
+std::string plate_and_shell_geo(const double centre_z, const bool facing_down)
+{
+  const double side = facing_down ? -1. : 1.;
+  std::ostringstream text;
+  text.precision(17);
+  text << "Point(1) = {0, -2, 0}; Point(2) = {4, -2, 0}; Point(3) = {4, 0, 0}; Point(4) = {0, 0, "
+          "0};\n"
+       << "Line(1) = {1, 2}; Line(2) = {2, 3}; Line(3) = {3, 4}; Line(4) = {4, 1};\n"
+       << "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+       << "Transfinite Curve {1, 3} = 17; Transfinite Curve {2, 4} = 9;\n"
+       << "Transfinite Surface {1}; Recombine Surface {1};\n"
+       << "Point(11) = {0, " << centre_z << ", 0}; Point(12) = {0, " << centre_z + side
+       << ", 0}; Point(13) = {1, " << centre_z << ", 0};\n"
+       << "Point(14) = {0, " << centre_z + 0.5 * side << ", 0}; Point(15) = {0.5, " << centre_z
+       << ", 0};\n"
+       << "Circle(11) = {12, 11, 13}; Line(12) = {13, 15}; Circle(13) = {15, 11, 14};\n"
+       << "Line(14) = {14, 12};\n"
+       << "Curve Loop(11) = {11, 12, 13, 14}; Plane Surface(11) = {11};\n"
+       << "Transfinite Curve {11, 13} = 13; Transfinite Curve {12, 14} = 4;\n"
+       << "Transfinite Surface {11}; Recombine Surface {11};\n"
+       << "Physical Surface(1) = {1}; Physical Surface(2) = {11};\n"
+       << "Physical Curve(1) = {4, 14}; Physical Curve(2) = {11}; Physical Curve(3) = {3};\n"
+       << "Physical Curve(4) = {12}; Physical Curve(5) = {13}; Physical Curve(6) = {1};\n"
+       << "Physical Curve(7) = {2};\n";
+  return text.str();
+}
+
+TEST(GeneralMeshes, SphericalEndOnPlateHasTheHertzReferenceOfItsRadiusAndBodyMass)
+{
+  // Issue 26 (the tutorial's striker with a spherical end): the shell's outer arc, R = 1, its pole
+  // 0.25 above the plate, moving down at 1 onto the plate at rest: Hertz's sphere on a flat body
+  // with R* = R, E* of both bodies and the masses rho V of the shell and of the plate (their
+  // meshed volumes, 2/3 pi (1 - 0.125) and 16 pi 2, to the Q2 volume error, 1e-5 as for spheres);
+  // first touch at t = 0.25. No finite-sphere law: that is for whole spheres. With the shell
+  // turned over (centre 1.5 above the plate, its flat annulus toward it, the circle's lower pole
+  // 0.5 above the plate but no point of the body) there is no spherical end facing it: no
+  // reference.
+  const ScratchDirectory directory;
+  const auto model_of = [&](const std::string& geo)
+  {
+    const RunParameters parameters =
+        ParameterReader(source_path("prm/spheres_rho0.001.prm"),
+                        {"Mesh/file=" + geo,
+                         "Mesh/geo parameters=",
+                         "Contact/number of pairs=1",
+                         "Contact/Pair 1/slave boundary=2",
+                         "Contact/Pair 1/master boundary=3",
+                         "Bodies/Body 1/monitor point=",
+                         "Bodies/Body 2/monitor point=",
+                         "Bodies/Body 1/Initial velocity/Function expression=0; 0"})
+            .parameters();
+    return std::make_unique<AxisymmetricMeshModel>(
+        parameters.mesh, parameters.bodies, parameters.contact.pairs);
+  };
+  const auto model = model_of(directory.write("shell_down.geo", plate_and_shell_geo(1.25, true)));
+  Triangulation<2> triangulation;
+  model->create_triangulation(triangulation);
+  const auto hertz = model->hertz_reference();
+  ASSERT_TRUE(hertz);
+  const double shell_mass = 1e-3 * 2. / 3. * numbers::PI * (1. - 0.125);
+  const double plate_mass = 1e-3 * numbers::PI * 16. * 2.;
+  const double mass       = shell_mass * plate_mass / (shell_mass + plate_mass);
+  std::cout << "  spherical end on a plate: R* " << hertz->effective_radius() << ", m* "
+            << hertz->effective_mass() << " (expected " << mass << "), first touch "
+            << hertz->first_touch_time() << std::endl;
+  EXPECT_NEAR(hertz->effective_radius(), 1., 1e-12);
+  EXPECT_NEAR(hertz->effective_modulus(), 5e3 / (2. * (1. - 0.09)), 1e-9);
+  EXPECT_NEAR(hertz->effective_mass(), mass, sphere_volume_tolerance * mass);
+  EXPECT_NEAR(hertz->relative_approach_speed(), 1., 1e-12);
+  EXPECT_NEAR(hertz->first_touch_time(), 0.25, 1e-12);
+  EXPECT_FALSE(model->finite_sphere_reference());
+
+  const auto flipped = model_of(directory.write("shell_up.geo", plate_and_shell_geo(1.5, false)));
+  Triangulation<2> flipped_triangulation;
+  flipped->create_triangulation(flipped_triangulation);
+  EXPECT_FALSE(flipped->hertz_reference());
 }
 } // namespace dyncontact::testing
 

@@ -236,7 +236,8 @@ struct BodyParameters
   double youngs_modulus;
   double poissons_ratio;
   double density;
-  Point<2> monitor_point;
+  /// (r, z) whose nearest node is reported as u_tip_<b> etc.; empty: the body's centroid (0, z_c).
+  std::optional<Point<2>> monitor_point;
   std::shared_ptr<Functions::ParsedFunction<2>> initial_velocity;
   std::shared_ptr<Functions::ParsedFunction<2>> surface_traction;
 

@@ -48,6 +48,12 @@ public:
    */
   ContactDescription<2> contact_description(const NodeIndex<2>& nodes) const override;
   std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
+  /**
+   * The node of each body nearest to its `monitor point` (by default its centroid on the axis,
+   * (0, z_c)). Throws InputError for a given point farther
+   * from that node than the body's largest cell diameter (a point outside the body by more than a
+   * cell, which would silently report some surface node).
+   */
   std::vector<Node<2>> monitor_nodes(const NodeIndex<2>& nodes) const override;
   /**
    * Body b's `Surface traction` on its whole boundary except the axis: every boundary curve of the
@@ -76,6 +82,7 @@ public:
   void summarize_run(const std::string& directory,
                      const History& history,
                      const std::vector<double>& contact_impulses,
+                     const std::string& status,
                      std::ostream& log) const override;
   /**
    * Hertz's theory of this impact if it applies: one contact pair (declared, or the default of
@@ -87,7 +94,11 @@ public:
    * given (evaluated at the sphere's centre, at the flat surface's point on the axis); first touch
    * at gap / approach speed, at t = 0 if they touch to touching_tolerance(). Empty otherwise
    * (several pairs, other shapes, overlapping or separating bodies). Valid after
-   * create_triangulation().
+   * create_triangulation(). A body of another shape whose contact boundary is a spherical end
+   * (an arc of a circle centred on the axis whose pole is the body's extreme point toward the
+   * other side, e.g. a cylinder with a hemispherical end) counts as a sphere with the arc's radius
+   * and the body's mass rho V: Hertz's rigid-body impact, fair while the contact lasts longer than
+   * the waves take to cross the body; no finite-sphere law then.
    */
   std::optional<HertzImpact> hertz_reference() const;
   /**
@@ -104,15 +115,18 @@ public:
 
 private:
   /**
-   * One side of a head-on impact along the axis (hertz_reference()): a full sphere, or a flat
-   * surface perpendicular to the axis at z = surface_z of an elastic body or of the rigid plane
-   * (no body).
+   * One side of a head-on impact along the axis (hertz_reference()): a spherical surface (an arc
+   * of a circle centred on the axis) whose pole faces the other side, of a body that is the whole
+   * sphere (whole_sphere) or any other shape (a striker's spherical end: Hertz's contact radius is
+   * the arc's, the mass the body's); or a flat surface perpendicular to the axis at z = surface_z
+   * of an elastic body or of the rigid plane (no body).
    */
   struct ImpactSide
   {
     std::optional<SphereGeometry> sphere;
     double surface_z;
     std::optional<unsigned int> body;
+    bool whole_sphere;
   };
   /** The contact pairs in force: the declared ones, or the default of contact_description(). */
   std::vector<ContactPairParameters> effective_pairs() const;
@@ -126,6 +140,8 @@ private:
   {
     ImpactSide sphere, other;
     double approach_speed, gap;
+    /** +1 if the other side lies above the sphere side (larger z), else -1. */
+    double direction;
   };
   std::optional<HeadOnImpact> head_on_impact() const;
   /**
@@ -135,6 +151,11 @@ private:
   ElasticFlatBody flat_body(const ImpactSide& side) const;
   /** The ElasticSphere of body b with the sphere `geometry`. */
   ElasticSphere elastic_sphere(unsigned int body, const SphereGeometry& geometry) const;
+  /**
+   * The mass of a spherical side as Hertz sees it: rho 4/3 pi R^3 of a whole sphere, rho V (V the
+   * body's meshed volume) of a body with a spherical end.
+   */
+  double spherical_side_mass(const ImpactSide& side) const;
   /**
    * How close surfaces count as touching at t = 0: 1e-9 of the shortest cell edge, and at least
    * the round-off of the positions (8 units in the last place of the largest |coordinate| of a
@@ -162,9 +183,13 @@ private:
   double largest_coordinate;
   /** Smallest distance between boundary vertices of bodies 0 and 1 at t = 0 [length]. */
   double closest_boundary_vertices;
-  /** Extent in z of each body [length]. */
-  std::vector<double> body_heights;
+  /** Largest cell diameter of each body [length]. */
+  std::vector<double> largest_cell_diameter;
+  /** Lowest and highest z of each body's vertices [length]. */
+  std::vector<double> body_lowest_z, body_highest_z;
   /** Volume of revolution of each body's mesh (Q2 mapping) [length^3]. */
   std::vector<double> body_volumes;
+  /** The z of each body's centroid (its volume's, on the axis) [length]. */
+  std::vector<double> body_centroid_z;
 };
 } // namespace dyncontact

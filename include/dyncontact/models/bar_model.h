@@ -51,6 +51,7 @@ public:
   void summarize_run(const std::string& directory,
                      const History& history,
                      const std::vector<double>& contact_impulses,
+                     const std::string& status,
                      std::ostream& log) const override;
 
   /** The exact wave solution of these bars, tracked up to `end_time`. */

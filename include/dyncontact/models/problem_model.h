@@ -78,11 +78,14 @@ public:
    * included) with the model's reference, writing the comparison into `directory` and a short
    * report to `log`. `contact_impulses` [force time], one per body, is the impulse of the contact
    * forces on it along the impact direction since t = 0, as the run accumulated it (the momentum
-   * change the contact caused, to the momentum guard's tolerance). The default does nothing.
+   * change the contact caused, to the momentum guard's tolerance). `status` is "complete" or
+   * "incomplete: <why>" (summary_status()), written in the summary's last column, `status`, on
+   * every row. The default does nothing.
    */
   virtual void summarize_run(const std::string& directory,
                              const History& history,
                              const std::vector<double>& contact_impulses,
+                             const std::string& status,
                              std::ostream& log) const;
 
   /** A few lines describing the problem (sizes, wave speeds, Courant numbers). */

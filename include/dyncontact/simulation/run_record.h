@@ -47,6 +47,12 @@ public:
   /** The wall time [s] of each timed phase; finish() adds the whole run's as "total". */
   void set_wall_times(std::map<std::string, double> wall_times);
 
+  /**
+   * The status of the run's summaries (Simulation::summary_status(): "complete" or
+   * "incomplete: <why>"), written as "summaries"; null while empty.
+   */
+  void set_summary_status(std::string status);
+
   /** Records the end now with `outcome` and rewrites run.json (silently keeps the old one if the
    *  file cannot be written: the outcome is also on the terminal). */
   void finish(const RunOutcome& outcome);
@@ -64,6 +70,7 @@ private:
   std::chrono::steady_clock::time_point start_time;
   std::string finished;
   std::map<std::string, double> wall_times;
+  std::string summary_status;
   bool has_outcome = false;
   RunOutcome outcome{};
 };

@@ -2,6 +2,8 @@
 
 #include <dyncontact/base/parameters.h>
 
+#include <ostream>
+
 namespace dyncontact
 {
 /**
@@ -10,7 +12,8 @@ namespace dyncontact
  * candidates, monitor nodes, penalty sizing, the stability limit of the time step, the initial
  * conditions at every node) and, for bars with Output/write exact solution, the exact solution;
  * and checks that Output/directory can be created and written. Throws the InputError the run
- * would throw.
+ * would throw. Writes to `log` the set-up summary a run prints (DoFs, pairs, steps, scheme, the
+ * bodies, the highest mode, the reference solution the run will write).
  */
-void check_run_setup(const RunParameters& parameters);
+void check_run_setup(const RunParameters& parameters, std::ostream& log);
 } // namespace dyncontact

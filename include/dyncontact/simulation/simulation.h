@@ -27,6 +27,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <chrono>
+#include <limits>
 #include <map>
 #include <memory>
 #include <ostream>
@@ -76,8 +77,22 @@ public:
    */
   void prepare();
 
+  /**
+   * Checks, after prepare(), that `directory`/checkpoint.bin exists and belongs to this problem
+   * and rank count, reading nothing else and writing nothing; throws the InputError
+   * run(directory) would (the program calls it before it touches the directory's files).
+   */
+  void check_checkpoint(const std::string& directory);
+
   /** Whether run() prints the progress line (default true; `--quiet` switches it off). */
   void set_progress(const bool show) { show_progress = show; }
+
+  /**
+   * "complete" if the summaries (impact_summary.csv, exact_summary.csv) cover the whole run and
+   * its whole contact, else "incomplete: <why>" (stopped early, or still in contact at the end
+   * time); empty before they are written.
+   */
+  const std::string& summary_status() const { return summaries; }
 
   /** Wall time [s] of each timed phase so far (assembly, factorization, output, ...). */
   std::map<std::string, double> wall_times() const
@@ -191,8 +206,11 @@ private:
                    unsigned int nominal_step,
                    unsigned int linear_solves,
                    unsigned int cuts);
-  /** Writes the reference solution at the recorded times and the run's summary. */
-  void write_reference_and_summary();
+  /**
+   * Writes the reference solution at the recorded times and the run's summary, marked with
+   * summary_status(): `stop` says why a run ends before its end time (empty when it reached it).
+   */
+  void write_reference_and_summary(const std::string& stop = "");
 
   /** What must match between a checkpoint and the run that resumes it. */
   ProblemFingerprint problem_fingerprint() const;
@@ -203,6 +221,13 @@ private:
   void write_checkpoint();
   /** Reads `directory`/checkpoint.bin; throws InputError if missing or of another problem. */
   void read_checkpoint(const std::string& directory);
+  /**
+   * Opens `directory`/checkpoint.bin, checks its fingerprint against this problem's and hands the
+   * archive, positioned at the state, to `read_state`; throws InputError if the file is missing,
+   * unreadable or of another problem.
+   */
+  template <class ReadState>
+  void open_checkpoint(const std::string& directory, const ReadState& read_state);
 
   /** prepare(), the output writers, the step controller, the initial record or the checkpoint. */
   void start(const std::string& resume_directory);
@@ -327,5 +352,9 @@ private:
   Counters counters;
   Progress progress;
   bool show_progress = true;
+  /** summary_status() */
+  std::string summaries;
+  /** Time of the state in checkpoint.bin, written or resumed by this run (NaN: none). */
+  double checkpoint_time = std::numeric_limits<double>::quiet_NaN();
 };
 } // namespace dyncontact

@@ -1,0 +1,25 @@
+# Runs COMMAND ('|'-separated; exit code 0 or 3, both keep a summary) with its output in DIRECTORY,
+# then requires the summary file SUMMARY (relative to DIRECTORY) to carry the status STATUS (a
+# regular expression) in the last column of every row, and run.json to record it as "summaries"
+# (issue 26: a partial impact read as a whole one).
+string(REPLACE "|" ";" command "${COMMAND}")
+file(REMOVE_RECURSE "${DIRECTORY}")
+execute_process(COMMAND ${command} RESULT_VARIABLE result OUTPUT_VARIABLE output ERROR_VARIABLE error)
+if(NOT result EQUAL 0 AND NOT result EQUAL 3)
+  message(FATAL_ERROR "exit code ${result}:\n${output}\n${error}")
+endif()
+file(STRINGS "${DIRECTORY}/${SUMMARY}" rows)
+list(POP_FRONT rows header)
+if(NOT header MATCHES ",status$")
+  message(FATAL_ERROR "${SUMMARY} has no status column: ${header}")
+endif()
+foreach(row IN LISTS rows)
+  if(NOT row MATCHES ",${STATUS}$")
+    message(FATAL_ERROR "${SUMMARY} row without the status '${STATUS}': ${row}")
+  endif()
+endforeach()
+file(READ "${DIRECTORY}/run.json" record)
+if(NOT record MATCHES "\"summaries\": \"${STATUS}\"")
+  message(FATAL_ERROR "run.json does not record the summaries' status '${STATUS}':\n${record}")
+endif()
+message(STATUS "${SUMMARY}: ${row}")
