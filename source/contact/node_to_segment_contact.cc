@@ -208,8 +208,9 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
                      " lies within the search radius " + format_number(search_radius) +
                      " of the surface of body " +
                      std::to_string(this->master_surface.nodes().front().body + 1) +
-                     ": node-to-segment contact has no candidate pairs (a larger search radius "
-                     "covers the approach the run needs).");
+                     ": node-to-segment contact has no candidate pairs (the radius is the bodies' "
+                     "initial gap plus a quarter of the smaller one's height): check that the pair "
+                     "names the two facing surfaces.");
 }
 
 template <int dim>

@@ -259,7 +259,12 @@ std::vector<ContactPairParameters> AxisymmetricMeshModel::effective_pairs() cons
   return {{SphereMeshIds::surface(0),
            SphereMeshIds::surface(1),
            std::nullopt,
-           "Mesh/file = '" + mesh.file + "'"}};
+           "the default pair of Contact/number of pairs = 0 (curve " +
+               std::to_string(SphereMeshIds::surface(0)) + " of body 1 with curve " +
+               std::to_string(SphereMeshIds::surface(1)) +
+               " of body 2, as in the sphere meshes; declare Contact/Pair 1 for others), Mesh/file "
+               "= '" +
+               mesh.file + "'"}};
 }
 
 std::optional<AxisymmetricMeshModel::ImpactSide>
