@@ -115,11 +115,11 @@ std::string CommandLine::usage()
          "\n"
          "A run writes into Output/directory: history.csv (one row per step), the reference\n"
          "solution (exact.csv for bars; hertz.csv and impact_summary.csv for a head-on impact\n"
-         "of a sphere or a spherical end), profile_t<T>.csv (and contact_pressure_t<T>.csv, "
-         "cells.csv for meshes),\n"
-         "solution_*.vtu with solution.pvd (and contact_surface_*.vtu, contact_surface.pvd),\n"
-         "original.prm (the input as given), parameters.prm (every value in effect, re-runnable\n"
-         "from any directory) and run.json (version, commit, command line, times, outcome). It\n"
-         "first removes these files of an earlier run from the directory (other files stay).\n";
+         "of a sphere or a spherical end), profile_t<T>.csv (and contact_pressure_t<T>.csv,\n"
+         "cells.csv for meshes), solution_*.vtu with solution.pvd (and contact_surface_*.vtu,\n"
+         "contact_surface.pvd), original.prm (the input as given), parameters.prm (every value\n"
+         "in effect, re-runnable from any directory) and run.json (version, commit, command\n"
+         "line, times, outcome). It first removes these files of an earlier run from the\n"
+         "directory (other files stay).\n";
 }
 } // namespace dyncontact

@@ -26,8 +26,8 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
 {
   geometry = read_gmsh_mesh(mesh.file, mesh.geo_parameters, triangulation);
   std::vector<unsigned int> cells_of_body(n_bodies(), 0);
-  std::vector<double> lowest_z(n_bodies(), std::numeric_limits<double>::max());
-  std::vector<double> highest_z(n_bodies(), std::numeric_limits<double>::lowest());
+  body_lowest_z.assign(n_bodies(), std::numeric_limits<double>::max());
+  body_highest_z.assign(n_bodies(), std::numeric_limits<double>::lowest());
   std::vector<std::vector<Point<2>>> boundary_vertices(n_bodies());
   largest_cell_diameter.assign(n_bodies(), 0.);
   shortest_edge      = std::numeric_limits<double>::max();
@@ -47,8 +47,8 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
     {
       const Point<2>& vertex = cell->vertex(v);
       largest_coordinate = std::max({largest_coordinate, std::abs(vertex[0]), std::abs(vertex[1])});
-      lowest_z[body]     = std::min(lowest_z[body], vertex[1]);
-      highest_z[body]    = std::max(highest_z[body], vertex[1]);
+      body_lowest_z[body]  = std::min(body_lowest_z[body], vertex[1]);
+      body_highest_z[body] = std::max(body_highest_z[body], vertex[1]);
     }
     for (const auto& face : cell->face_iterators())
       if (face->at_boundary())
@@ -60,9 +60,7 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
       throw InputError("Mesh/file = '" + mesh.file + "' has no cells of body " +
                        std::to_string(body + 1) + " (physical surface " + std::to_string(body + 1) +
                        "), but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
-  n_cells        = triangulation.n_active_cells();
-  body_lowest_z  = lowest_z;
-  body_highest_z = highest_z;
+  n_cells = triangulation.n_active_cells();
   // Volumes of revolution, 2 pi r over each cell in the Q2 mapping of the manifolds.
   const MappingQ<2> mapping(2);
   const FE_Q<2> linear(1);
@@ -221,16 +219,16 @@ std::vector<Node<2>> AxisymmetricMeshModel::monitor_nodes(const NodeIndex<2>& no
     if (!given)
       continue;
     // Inside a cell of the body a point is within that cell's diameter of one of its nodes.
-    const double distance = point.distance(monitors.back().position);
+    const Point<2>& node  = monitors.back().position;
+    const double distance = point.distance(node);
+    const auto text       = [](const Point<2>& p)
+    { return "(" + format_number(p[0]) + ", " + format_number(p[1]) + ")"; };
     if (distance > largest_cell_diameter[body])
       throw InputError(
-          "Bodies/Body " + std::to_string(body + 1) + "/monitor point = " +
-          ("(" + format_number(point[0]) + ", " + format_number(point[1]) + ")") + " is " +
+          "Bodies/Body " + std::to_string(body + 1) + "/monitor point = " + text(point) + " is " +
           format_number(distance) + " from the nearest node of body " + std::to_string(body + 1) +
-          " at " +
-          ("(" + format_number(monitors.back().position[0]) + ", " +
-           format_number(monitors.back().position[1]) + ")") +
-          ", farther than its largest cell (" + format_number(largest_cell_diameter[body]) +
+          " at " + text(node) + ", farther than its largest cell (" +
+          format_number(largest_cell_diameter[body]) +
           "): give a point in the body (r >= 0, z within " + format_number(body_lowest_z[body]) +
           ".." + format_number(body_highest_z[body]) + ").");
   }
@@ -360,18 +358,9 @@ std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
     return std::nullopt;
   const ElasticSphere sphere = elastic_sphere(*impact->sphere.body, *impact->sphere.sphere);
   const double touch         = impact->gap / impact->approach_speed;
-  if (impact->sphere.whole_sphere && (!impact->other.sphere || impact->other.whole_sphere))
-  {
-    if (impact->other.sphere)
-      return HertzImpact::two_spheres(sphere,
-                                      elastic_sphere(*impact->other.body, *impact->other.sphere),
-                                      impact->approach_speed,
-                                      touch);
-    return HertzImpact::sphere_on_flat(
-        sphere, flat_body(impact->other), impact->approach_speed, touch);
-  }
-  // A spherical end: the effective quantities of two_spheres() and sphere_on_flat(), with the
-  // masses of the bodies that carry the ends.
+  // The effective quantities of HertzImpact::two_spheres() and sphere_on_flat(), with the mass of
+  // a spherical end's whole body (spherical_side_mass()); E and nu of the other side as
+  // flat_body() gives them (the rigid plane's E infinite).
   const ElasticFlatBody other = flat_body(impact->other);
   return HertzImpact(
       impact->other.sphere ? effective_radius(sphere.radius, impact->other.sphere->radius)
