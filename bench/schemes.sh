@@ -7,11 +7,12 @@
 #   the stiff striker (6.2 with bar 1 at E = 1e4, trapezoidal rule) and its mirror, the soft
 #   striker (bar 2 at E = 1e4); the Signorini bar (10 periods); the spheres (default prm, paper's
 #   dt), the coarse spheres at dt = 0.02 and the dissimilar spheres.
-# A run that fails is reported in its cells with its error line. About 10 minutes.
+# A run that fails is reported in its cells with its error line.
 # Then the whole-kind sweep of issue 25, item 7 (bench/schemes_sweep.py: the stiff striker at
-# impedance ratios 1e2 to 1e6 and dt 0.1 to 0.005, the coarse spheres at dt 0.03 to 0.0025) for the
-# schemes in SWEEP (default: the default and mass redistribution; SWEEP= skips it), about 10 minutes
-# more: bench/results/schemes/sweep.md.
+# impedance ratios 1e2 to 1e6 and dt 0.1 to 0.005, the coarse spheres at dt 0.03 to 0.0025, every
+# shipped impact) for the schemes in SWEEP (default: the default, the previous one and mass
+# redistribution on the trapezoidal rule; SWEEP= skips it): bench/results/schemes/sweep.md.
+# Both parts: 17 minutes on 2 cores (2026-12-03).
 #   bench/schemes.sh                       (every scheme)
 #   SCHEMES="persistency none" RESULTS=/tmp/subset bench/schemes.sh   (a subset, elsewhere)
 #   SCHEMES="taylor-papadopoulos@generalized-alpha:0.8" bench/schemes.sh   (on a dissipative
@@ -21,7 +22,7 @@ source "$(dirname "$0")/common.sh"
 results=${RESULTS:-bench/results/schemes}
 rm -rf "$results"
 mkdir -p "$results"
-read -r -a schemes <<<"${SCHEMES:-none taylor-papadopoulos mass-redistribution contact-stabilized persistency velocity-update taylor-papadopoulos@generalized-alpha:0.8 mass-redistribution@generalized-alpha:0.8}"
+read -r -a schemes <<<"${SCHEMES:-default none taylor-papadopoulos mass-redistribution contact-stabilized persistency velocity-update taylor-papadopoulos@generalized-alpha:0.8 mass-redistribution@generalized-alpha:0.8}"
 trapezoidal=(--set "Time integration/beta=0.25")
 coarse_spheres=(--set "Mesh/file=../meshes/two_spheres.geo"
   --set "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3"
@@ -33,7 +34,12 @@ run() # problem scheme prm arguments...
   shift 3
   local output="$results/$problem/$scheme"
   # A scheme is a Contact/dynamics, optionally on a dissipative integrator: name@integrator:rho_inf.
-  local integrator=()
+  local integrator=() dynamics=(--set "Contact/dynamics=${scheme%%@*}")
+  # default: what a file without these entries gets (the files name the paper's lines).
+  if [[ $scheme == default ]]; then
+    dynamics=(--set "Contact/dynamics=mass-redistribution" --set "Time integration/integrator=newmark"
+      --set "Time integration/beta=" --set "Time integration/gamma=")
+  fi
   if [[ $scheme == *@* ]]; then
     local member=${scheme#*@}
     integrator=(--set "Time integration/integrator=${member%%:*}"
@@ -41,7 +47,7 @@ run() # problem scheme prm arguments...
   fi
   mkdir -p "$output"
   /usr/bin/time -f "%e" -o "$output/wall_time" build/dyncontact "$prm" --quiet --output "$output" \
-    --set "Output/vtu interval=0" --set "Contact/dynamics=${scheme%%@*}" "$@" "${integrator[@]}" \
+    --set "Output/vtu interval=0" "$@" "${dynamics[@]}" "${integrator[@]}" \
     >"$output/log" 2>&1 || echo "exit $?" >"$output/failed"
 }
 
@@ -60,7 +66,7 @@ for scheme in "${schemes[@]}"; do
   run dissimilar_spheres "$scheme" prm/dissimilar_spheres.prm
 done
 /usr/bin/python3 bench/schemes_report.py "$results" "${schemes[@]}"
-read -r -a sweep <<<"${SWEEP-taylor-papadopoulos@generalized-alpha:0.8 mass-redistribution}"
+read -r -a sweep <<<"${SWEEP-default taylor-papadopoulos@generalized-alpha:0.8 mass-redistribution}"
 if [ ${#sweep[@]} -gt 0 ]; then
   /usr/bin/python3 bench/schemes_sweep.py build/dyncontact "$results" "${sweep[@]}"
 fi
