@@ -3,6 +3,7 @@
 #include <dyncontact/simulation/interruption.h>
 #include <dyncontact/simulation/simulation.h>
 #include <dyncontact/time_integration/mode_resolution.h>
+#include <dyncontact/time_integration/stability_check.h>
 
 #include <deal.II/base/utilities.h>
 #include <deal.II/fe/fe_q.h>
@@ -74,7 +75,7 @@ void Simulation<dim>::setup()
   build_contact_and_solver();
   index_dofs();
   schedule_and_log();
-  check_stability();
+  check_time_step();
 }
 
 template <int dim>
@@ -133,6 +134,8 @@ void Simulation<dim>::build_contact_and_solver()
                                                  GridTools::minimal_cell_diameter(triangulation),
                                                  timer,
                                                  integrator.alpha_f());
+  stepper = std::make_unique<ImplicitStepper<dim>>(
+      integrator, mass, is_fixed_dof, *loads, *contact, *contact_dynamics, *solver);
 }
 
 template <int dim>
@@ -211,26 +214,8 @@ void Simulation<dim>::schedule_and_log()
         << ", bodies' highest mode omega dt = " << highest_frequency * dt << "\n";
 }
 
-namespace
-{
-/**
- * A largest admissible time step as printed in a message: 6 significant digits rounded down, so
- * that the printed step itself passes the check that suggested it (rounded to nearest, 0.100201
- * for the limit 0.1002006 was refused).
- */
-std::string format_largest_step(const double step)
-{
-  const double scale = std::pow(10., 5 - std::floor(std::log10(step)));
-  return format_number(std::floor(step * scale) / scale);
-}
-
-/// Relative slack of the stability checks: the round-off of omega dt recomputed from a step that
-/// was printed at the limit, nothing more.
-constexpr double round_off_slack = 1e-12;
-} // namespace
-
 template <int dim>
-void Simulation<dim>::check_stability() const
+void Simulation<dim>::check_time_step() const
 {
   const double body_omega_dt   = highest_frequency * integrator.time_step();
   const double spring_omega_dt = penalty_spring_omega_dt(*contact, mass, integrator.time_step());
@@ -245,52 +230,15 @@ void Simulation<dim>::check_stability() const
         << penalty_factor * std::pow(1. / spring_omega_dt, 2)
         << " (or auto) resolves the spring (omega dt <= 1), at the cost of more penetration.\n";
 
-  // With 2 beta < gamma Newmark is stable only for omega dt <= 1/sqrt(gamma/2 - beta). Every mode
-  // must stay below it: above, the run blows up, and the algorithmic energy, whose weight
-  // beta - gamma/2 of a.Ma is then negative, does not show it (measured: 6.1 at dt = 0.3, energy
-  // 5 -> 2.7e64 with the guards passing). A penalty spring adds its stiffness to the mesh's, so the
-  // coupled highest mode is bounded by sqrt(omega_mesh^2 + omega_spring^2) (Weyl's inequality on
-  // M^-1/2 (K + K_penalty) M^-1/2): 6.1 with a spring of omega dt = 1 on a mesh at 2 (bound 2.24,
-  // limit 2.004) went from energy 5 to 6e51. Such an input is rejected before the first step.
-  const double limit = integrator.stability_limit();
-  const auto reject = [&](const std::string& what, const double omega_dt, const std::string& remedy)
-  {
-    throw InputError(
-        "Time integration/time step = " + format_number(integrator.time_step()) + ": " + what +
-        " has omega dt = " + format_number(omega_dt) + ", above the stability limit " +
-        format_number(limit) + " of Newmark with beta = " + format_number(integrator.beta()) +
-        ", gamma = " + format_number(integrator.gamma()) +
-        "; use a time step <= " + format_largest_step(integrator.time_step() * limit / omega_dt) +
-        ", or 2 beta >= gamma" + remedy + ".");
-  };
-  // The automatic penalty keeps its springs at omega dt = 1; a softer spring would buy stability
-  // with a penetration growing as 1 / (omega dt)^2, so such a time step is refused instead.
-  if (penalty_lowered &&
-      body_omega_dt * body_omega_dt + 1. > limit * limit * (1. + 2. * round_off_slack))
-    throw InputError(
-        "Contact/penalty factor = auto: with Time integration/beta = " +
-        format_number(integrator.beta()) +
-        " < gamma/2 the mesh's highest mode (omega dt = " + format_number(body_omega_dt) +
-        ") leaves a penalty spring of omega dt = 1 no room below the stability limit " +
-        format_number(limit) + "; use a time step <= " +
-        format_largest_step(integrator.time_step() * std::sqrt(limit * limit - 1.) /
-                            body_omega_dt) +
-        ", beta >= gamma/2, or Lagrange multipliers.");
-  if (body_omega_dt > limit * (1. + round_off_slack))
-    reject("the mesh's highest mode", body_omega_dt, "");
-  const double coupled_omega_dt = std::hypot(body_omega_dt, spring_omega_dt);
-  if (spring_omega_dt > 0. && coupled_omega_dt > limit * (1. + round_off_slack))
-    reject("the mesh with the penalty spring (Contact/penalty factor)",
-           coupled_omega_dt,
-           " or a smaller penalty factor");
+  check_stability(integrator, body_omega_dt, spring_omega_dt, penalty_lowered);
 }
 
 template <int dim>
 void Simulation<dim>::set_initial_conditions()
 {
-  displacement.reinit(dof_handler.n_dofs());
-  velocity.reinit(dof_handler.n_dofs());
-  acceleration.reinit(dof_handler.n_dofs());
+  StepState& state = stepper->state();
+  state.reinit(dof_handler.n_dofs());
+  Vector<double>&velocity = state.velocity, &acceleration = state.acceleration;
   for (const auto& node : nodes->nodes())
   {
     const Tensor<1, dim> v0 = model->initial_velocity(node.body, node.position);
@@ -299,13 +247,14 @@ void Simulation<dim>::set_initial_conditions()
   }
   // Initial acceleration from equilibrium, M a_0 = W(0) - Q(u_0) (no contact at t = 0); zero at
   // massless DoFs (Contact/dynamics = mass-redistribution), whose rates carry no momentum.
-  bodies->assemble_internal_force(displacement, internal_force, nullptr);
-  external_force = loads->force(0.);
+  bodies->assemble_internal_force(state.displacement, state.internal_force, nullptr);
+  state.external_force = loads->force(0.);
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    acceleration[i] = mass[i] > 0. ? (external_force[i] - internal_force[i]) / mass[i] : 0.;
+    acceleration[i] =
+        mass[i] > 0. ? (state.external_force[i] - state.internal_force[i]) / mass[i] : 0.;
   for (const auto dof : fixed_dofs)
     velocity[dof] = acceleration[dof] = 0.;
-  contact->update_geometry(displacement);
+  contact->update_geometry(state.displacement);
   forces_on_bodies = body_forces();
   impulses.assign(model->n_bodies(), 0.);
   contact_impulses.assign(model->n_bodies(), 0.);
@@ -315,11 +264,7 @@ void Simulation<dim>::set_initial_conditions()
 template <int dim>
 typename Simulation<dim>::State Simulation<dim>::current_state() const
 {
-  return {displacement,
-          velocity,
-          acceleration,
-          internal_force,
-          external_force,
+  return {stepper->state(),
           contact->state(),
           solver->tangent_scale(),
           forces_on_bodies,
@@ -331,11 +276,7 @@ typename Simulation<dim>::State Simulation<dim>::current_state() const
 template <int dim>
 void Simulation<dim>::restore(const State& state)
 {
-  displacement     = state.displacement;
-  velocity         = state.velocity;
-  acceleration     = state.acceleration;
-  internal_force   = state.internal_force;
-  external_force   = state.external_force;
+  stepper->state() = state.step;
   forces_on_bodies = state.body_forces;
   solver->set_tangent_scale(state.tangent_scale);
   impulses         = state.impulses;
@@ -367,16 +308,18 @@ typename Simulation<dim>::BodyForces Simulation<dim>::body_forces() const
   // balance_body_momenta() has removed. A dissipative member balances at t_{n+1-alpha_f}, not at
   // t_{n+1}, so there every DoF's M a + Q - W counts (its sum over a body is sum M a - sum W, as
   // sum Q = 0): the momentum guard then checks the treatments' velocity corrections only.
+  const StepState& state                 = stepper->state();
   const std::vector<bool> in_active_pair = active_pair_dofs();
   const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
   BodyForces forces{std::vector<double>(model->n_bodies(), 0.),
                     std::vector<double>(model->n_bodies(), 0.)};
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
-    double force = external_force[i];
+    double force = state.external_force[i];
     if (every_dof || in_active_pair[i] || is_fixed_dof[i])
     {
-      const double balance = mass[i] * acceleration[i] + internal_force[i] - external_force[i];
+      const double balance =
+          mass[i] * state.acceleration[i] + state.internal_force[i] - state.external_force[i];
       force += balance;
       if (!is_fixed_dof[i])
         forces.contact[dof_body[i]] += dof_direction[i] * balance;
@@ -389,6 +332,8 @@ typename Simulation<dim>::BodyForces Simulation<dim>::body_forces() const
 template <int dim>
 void Simulation<dim>::accumulate_impulses(const State& before)
 {
+  const StepState& state  = stepper->state();
+  const StepState& start  = before.step;
   const double dt         = integrator.time_step();
   const double gamma      = integrator.gamma();
   const BodyForces forces = body_forces();
@@ -405,8 +350,8 @@ void Simulation<dim>::accumulate_impulses(const State& before)
     {
       const double correction =
           dof_direction[i] * mass[i] *
-          (velocity[i] - before.velocity[i] -
-           dt * ((1. - gamma) * before.acceleration[i] + gamma * acceleration[i]));
+          (state.velocity[i] - start.velocity[i] -
+           dt * ((1. - gamma) * start.acceleration[i] + gamma * state.acceleration[i]));
       impulses[dof_body[i]] += correction;
       contact_impulses[dof_body[i]] += correction;
     }
@@ -416,61 +361,21 @@ void Simulation<dim>::accumulate_impulses(const State& before)
   // work term of its energy identity (the trapezoid only for gamma = 1/2); a dissipative member,
   // whose balance takes the load at t_{n+1-alpha_f}, W(t_{n+1-alpha_f}) . (u_{n+1} - u_n).
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    external_work += (step_load.size() > 0
-                          ? step_load[i]
-                          : (1. - gamma) * before.external_force[i] + gamma * external_force[i]) *
-                     (displacement[i] - before.displacement[i]);
+    external_work += (stepper->step_load().size() > 0 ? stepper->step_load()[i]
+                                                      : (1. - gamma) * start.external_force[i] +
+                                                            gamma * state.external_force[i]) *
+                     (state.displacement[i] - start.displacement[i]);
 }
 
 template <int dim>
 unsigned int Simulation<dim>::do_time_step(const State& before)
 {
-  const Vector<double>& old_displacement = before.displacement;
-  const Vector<double>& old_velocity     = before.velocity;
-  // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
-  // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
-  contact->update_geometry(old_displacement);
-  Vector<double> predictor, increment(dof_handler.n_dofs());
-  integrator.predict(old_displacement, old_velocity, before.acceleration, predictor);
-  // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).
-  Vector<double> old_acceleration = before.acceleration;
-  const typename ContactDynamics<dim>::StepStart start{
-      old_displacement, old_velocity, before.internal_force, before.external_force, is_fixed_dof};
-  contact_dynamics->adjust_predictor(
-      integrator.rate_map(), *contact, mass, start, old_acceleration, predictor);
-  contact->set_reference_gaps(contact_dynamics->reference_gaps(*contact, start, predictor));
-  Vector<double> last_configuration = old_displacement; // as an increment over the predictor
-  last_configuration -= predictor;
-  external_force = loads->force(time);
-  // A dissipative member balances at t_{n+1-alpha_f}: the solve takes W_eff (GeneralizedAlpha).
-  Vector<double> step_force = external_force;
-  if (integrator.family() != IntegratorFamily::newmark)
-  {
-    step_load = loads->force(integrator.load_time(time));
-    Vector<double> old_inertia_force(mass);
-    old_inertia_force.scale(old_acceleration);
-    integrator.effective_force(step_load, old_inertia_force, before.internal_force, step_force);
-    step_old_acceleration = old_acceleration;
-    step_old_net_force    = before.internal_force;
-    step_old_net_force *= integrator.alpha_f();
-    step_old_net_force -= step_load;
-  }
-  const auto report = solver->solve(
-      predictor, integrator.inertia_factor(), step_force, last_configuration, increment);
-  internal_force = solver->internal_force();
+  Vector<double> increment;
+  const unsigned int linear_solves = stepper->solve(before.step, time, increment);
   balance_body_momenta(increment);
-  displacement = predictor;
-  displacement += increment;
-  integrator.update_rates(increment, old_velocity, old_acceleration, velocity, acceleration);
-  contact_dynamics->correct_rates(
-      integrator.rate_map(),
-      *contact,
-      mass,
-      {old_displacement, old_velocity, old_acceleration, displacement, increment, is_fixed_dof},
-      velocity,
-      acceleration);
+  stepper->finish(before.step, increment);
   accumulate_impulses(before);
-  return report.linear_solves;
+  return linear_solves;
 }
 
 template <int dim>
@@ -500,14 +405,6 @@ void Simulation<dim>::balance_body_momenta(Vector<double>& increment) const
 }
 
 template <int dim>
-Vector<double> Simulation<dim>::net_internal_force() const
-{
-  Vector<double> net = internal_force;
-  net -= external_force;
-  return net;
-}
-
-template <int dim>
 Vector<double> Simulation<dim>::contact_traction(const std::vector<double>& pressures) const
 {
   Vector<double> traction(dof_handler.n_dofs());
@@ -533,8 +430,8 @@ Simulation<dim>::pressure_samples(const std::vector<double>& pressures) const
   {
     const Node<dim>& slave = contact->candidate_pairs()[k].slave;
     samples.push_back({slave,
-                       current_position(slave, displacement),
-                       contact->gap(k, displacement),
+                       current_position(slave, stepper->state().displacement),
+                       contact->gap(k, stepper->state().displacement),
                        contact->pair_force(k),
                        pressures[k],
                        contact->is_active(k)});
@@ -545,6 +442,8 @@ Simulation<dim>::pressure_samples(const std::vector<double>& pressures) const
 template <int dim>
 typename Simulation<dim>::Measures Simulation<dim>::measure() const
 {
+  const StepState& state        = stepper->state();
+  const Vector<double>&velocity = state.velocity, &acceleration = state.acceleration;
   Measures measures{};
   for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
   {
@@ -552,23 +451,16 @@ typename Simulation<dim>::Measures Simulation<dim>::measure() const
     measures.acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
   }
   // After a step the solver's last evaluation was at this displacement: reuse its pass.
-  measures.strain_energy =
-      step_history.n_rows() == 0 ? bodies->strain_energy(displacement) : solver->strain_energy();
+  measures.strain_energy = step_history.n_rows() == 0 ? bodies->strain_energy(state.displacement)
+                                                      : solver->strain_energy();
   measures.algorithmic_energy = integrator.algorithmic_energy(
       measures.kinetic_energy, measures.strain_energy, measures.acceleration_energy);
   if (step_history.n_rows() > 0)
   {
     // The balance the step solved: at t_{n+1} for Newmark, at the intermediate times of a
     // dissipative member (M a_{n+1-alpha_m} + Q_{n+1-alpha_f} - W(t_{n+1-alpha_f})).
-    const bool at_intermediate_times    = step_old_acceleration.size() > 0;
-    Vector<double> balance_acceleration = acceleration;
-    Vector<double> net_force = at_intermediate_times ? internal_force : net_internal_force();
-    if (at_intermediate_times)
-    {
-      balance_acceleration.sadd(
-          1. - integrator.alpha_m(), integrator.alpha_m(), step_old_acceleration);
-      net_force.sadd(1. - integrator.alpha_f(), 1., step_old_net_force);
-    }
+    Vector<double> balance_acceleration, net_force;
+    stepper->solved_balance(balance_acceleration, net_force);
     const double force_factor = contact_dynamics->contact_force_factor(integrator.rate_map());
     measures.contact_force =
         force_factor * contact->recovered_contact_force(mass, balance_acceleration, net_force);
@@ -616,6 +508,7 @@ void Simulation<dim>::record_step(const Measures& measures,
                                   const unsigned int linear_solves,
                                   const unsigned int cuts)
 {
+  const StepState& state  = stepper->state();
   std::vector<double> row = {time,
                              measures.contact_force,
                              contact->total_pair_force(),
@@ -625,7 +518,7 @@ void Simulation<dim>::record_step(const Measures& measures,
                              measures.strain_energy,
                              measures.kinetic_energy + measures.strain_energy,
                              measures.algorithmic_energy,
-                             contact->max_penetration(displacement),
+                             contact->max_penetration(state.displacement),
                              measures.force_imbalance,
                              measures.velocity_jump,
                              measures.acceleration_jump,
@@ -633,11 +526,11 @@ void Simulation<dim>::record_step(const Measures& measures,
                              static_cast<double>(cuts)};
   // Contact pressures (surface contact only): one solve per step, skipped without contact.
   const std::vector<double> pressures = surface_contact && contact->n_active() > 0
-                                            ? contact->contact_pressures(displacement)
+                                            ? contact->contact_pressures(state.displacement)
                                             : std::vector<double>(contact->n_pairs(), 0.);
   if (dim > 1)
   {
-    row.push_back(contact->contact_radius(displacement));
+    row.push_back(contact->contact_radius(state.displacement));
     row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
   }
   const Tensor<1, dim> direction = model->impact_direction();
@@ -646,9 +539,9 @@ void Simulation<dim>::record_step(const Measures& measures,
     double u_tip = 0., v_tip = 0., a_tip = 0.;
     for (unsigned int d = 0; d < dim; ++d)
     {
-      u_tip += direction[d] * displacement[monitors[b].dofs[d]];
-      v_tip += direction[d] * velocity[monitors[b].dofs[d]];
-      a_tip += direction[d] * acceleration[monitors[b].dofs[d]];
+      u_tip += direction[d] * state.displacement[monitors[b].dofs[d]];
+      v_tip += direction[d] * state.velocity[monitors[b].dofs[d]];
+      a_tip += direction[d] * state.acceleration[monitors[b].dofs[d]];
     }
     row.insert(row.end(), {measures.momenta[b], impulses[b], u_tip, v_tip, a_tip});
   }
@@ -674,14 +567,19 @@ void Simulation<dim>::record_step(const Measures& measures,
   {
     const Vector<double> traction =
         surface_contact ? contact_traction(pressures) : Vector<double>();
-    field_output->write_fields(
-        frame, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
+    field_output->write_fields(frame,
+                               time,
+                               state.displacement,
+                               state.velocity,
+                               state.acceleration,
+                               surface_contact ? &traction : nullptr);
     if (surface_contact)
-      field_output->write_contact_surface(frame, time, displacement, samples);
+      field_output->write_contact_surface(frame, time, state.displacement, samples);
   }
   if (profile) // on the nominal grid only
   {
-    field_output->write_profile(time, nodes->nodes(), displacement, velocity, acceleration);
+    field_output->write_profile(
+        time, nodes->nodes(), state.displacement, state.velocity, state.acceleration);
     if (surface_contact)
       field_output->write_contact_pressure(time, samples);
   }
@@ -747,11 +645,7 @@ void Simulation<dim>::serialize_state(Archive& archive)
   typename ContactConstraints<dim>::State contact_state = contact->state();
   double tangent_scale                                  = solver->tangent_scale();
   archive& time;
-  archive& displacement;
-  archive& velocity;
-  archive& acceleration;
-  archive& internal_force;
-  archive& external_force;
+  archive & stepper->state();
   archive& contact_state.active;
   archive& contact_state.multipliers;
   archive& forces_on_bodies.total;
@@ -939,7 +833,8 @@ std::string Simulation<dim>::contact_event_failure(const State& before, const do
   if (!contact_dynamics->contact_nodes_massless() || !controller->can_cut() ||
       parameters.guards.contact_event_tolerance >= 1. || energy == 0.)
     return "";
-  const double work = contact->event_work(before.displacement, displacement, before.contact);
+  const double work =
+      contact->event_work(before.step.displacement, stepper->state().displacement, before.contact);
   if (!(work > parameters.guards.contact_event_tolerance * std::abs(energy)))
     return "";
   return "contact event work " + format_number(work / std::abs(energy)) +

@@ -15,6 +15,7 @@
 #include <dyncontact/simulation/step_guards.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
+#include <dyncontact/time_integration/implicit_stepper.h>
 #include <dyncontact/time_integration/step_controller.h>
 
 #include <deal.II/base/conditional_ostream.h>
@@ -120,8 +121,8 @@ public:
   const std::vector<Node<dim>>& all_nodes() const { return nodes->nodes(); }
 
   /** State at the last completed step; valid after run(). */
-  const Vector<double>& current_displacement() const { return displacement; }
-  const Vector<double>& current_velocity() const { return velocity; }
+  const Vector<double>& current_displacement() const { return stepper->state().displacement; }
+  const Vector<double>& current_velocity() const { return stepper->state().velocity; }
 
   /** The node whose motion is recorded as u_tip_<b>, v_tip_<b>, a_tip_<b>, per body. */
   const std::vector<Node<dim>>& monitor_nodes() const { return monitors; }
@@ -139,7 +140,7 @@ private:
   /** The state a failed step returns to. */
   struct State
   {
-    Vector<double> displacement, velocity, acceleration, internal_force, external_force;
+    StepState step;
     typename ContactConstraints<dim>::State contact;
     double tangent_scale; ///< the solver's, see ContactNewtonSolver::tangent_scale()
     BodyForces body_forces;
@@ -175,14 +176,17 @@ private:
    * step exceeds the stability limit of conditionally stable Newmark (2 beta < gamma), for the
    * mesh alone or with the penalty springs.
    */
-  void check_stability() const;
+  void check_time_step() const;
   void set_initial_conditions();
   /**
    * Removes from the converged `increment` the momentum error of each body: a rigid translation
    * along the impact direction cancels the body's residual summed along it (see the definition).
    */
   void balance_body_momenta(Vector<double>& increment) const;
-  /** Solves the step from `before` to `time` with the Newmark step size; throws SolverFailure. */
+  /**
+   * The step from `before` to `time` at the integrator's step size (the stepper's solve, the
+   * momentum balance, its finish), then the impulses; throws SolverFailure.
+   */
   unsigned int do_time_step(const State& before);
   /**
    * Per body, the force along the impact direction on the nodes of its active pairs and fixed
@@ -270,8 +274,6 @@ private:
     unsigned int total_solves = 0, total_cuts = 0, steps_taken = 0;
     std::vector<std::string> cut_places; ///< times of the first cuts
   };
-  /** Q(u) - W at the last solve: what the contact force balances at a node. */
-  Vector<double> net_internal_force() const;
   /** The nodal traction -p n on body A and p n on body B of every pair, p = `pressures`. */
   Vector<double> contact_traction(const std::vector<double>& pressures) const;
   /** Per candidate pair: its slave node, gap, multiplier, `pressures[k]` and active flag. */
@@ -299,11 +301,12 @@ private:
   bool prepared = false;
   std::vector<types::global_dof_index> fixed_dofs;
   std::unique_ptr<SurfaceTractions<dim>> loads;
-  Vector<double> external_force;                         ///< W at the current time
   std::unique_ptr<ContactGeometry<dim>> surface_contact; ///< null: fixed-normal pairs only
   std::unique_ptr<ContactConstraints<dim>> contact;
   std::unique_ptr<ContactDynamics<dim>> contact_dynamics; ///< Contact/dynamics
   std::unique_ptr<ContactNewtonSolver<dim>> solver;
+  /** The step and its state (u, v, a, Q, W at the current time). */
+  std::unique_ptr<ImplicitStepper<dim>> stepper;
   std::vector<Node<dim>> monitors;
   unsigned int innermost_pair = 0; ///< candidate pair nearest to the axis (centre_pressure)
   std::unique_ptr<FieldOutput<dim>> field_output;
@@ -316,16 +319,6 @@ private:
   bool penalty_lowered = false; ///< Contact/penalty factor = auto lowered the springs
   unsigned int n_steps;
   double time;
-  Vector<double> displacement, velocity, acceleration;
-  Vector<double> internal_force; ///< Q(u) at the current state
-  /**
-   * For a dissipative integrator, the old state's parts of the last step's balance at
-   * t_{n+1-alpha_f}: a_n as the step used it, and alpha_f Q(u_n) - W(t_{n+1-alpha_f}). Empty for
-   * Newmark, whose balance is at t_{n+1}.
-   */
-  Vector<double> step_old_acceleration, step_old_net_force;
-  /** For a dissipative integrator, W(t_{n+1-alpha_f}) of the last step; empty for Newmark. */
-  Vector<double> step_load;
   /** Per DoF: its body, and the impact-direction component of its unit vector. */
   std::vector<unsigned int> dof_body;
   std::vector<double> dof_direction;

@@ -1,0 +1,85 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact_dynamics/contact_dynamics.h>
+#include <dyncontact/discretization/surface_tractions.h>
+#include <dyncontact/solver/contact_newton_solver.h>
+#include <dyncontact/time_integration/generalized_alpha.h>
+#include <dyncontact/time_integration/step_state.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * One implicit step of the generalized-alpha family with contact, from a StepState at t_n to the
+ * one at t_{n+1}, in two phases around the caller's correction of the increment (Simulation
+ * removes the bodies' momentum error there):
+ *  - solve(): the pairs of u_n, Newmark's predictor (eq. 11 of Taylor & Papadopoulos 1993)
+ *    adjusted by the contact-dynamics treatment, the treatment's reference gaps, the load, and the
+ *    Newton solve of the balance (at t_{n+1}, or at t_{n+1-alpha_f} for a dissipative member);
+ *  - finish(): u_{n+1} = predictor + increment, the integrator's rates (eq. 12) and the
+ *    treatment's rate correction (eqs. 19-24 for the paper's scheme).
+ * It owns the current StepState; the integrator, lumped mass, fixed DoFs, loads, contact, its
+ * treatment and the Newton solver are the caller's and must outlive it.
+ */
+template <int dim>
+class ImplicitStepper
+{
+public:
+  ImplicitStepper(const GeneralizedAlpha& integrator,
+                  const Vector<double>& lumped_mass,
+                  const std::vector<bool>& is_fixed_dof,
+                  const SurfaceTractions<dim>& loads,
+                  ContactConstraints<dim>& contact,
+                  const ContactDynamics<dim>& dynamics,
+                  ContactNewtonSolver<dim>& solver);
+
+  /** The state at the last completed step (or the initial one). */
+  const StepState& state() const { return current; }
+  StepState& state() { return current; }
+
+  /**
+   * Solves the step from `before` to `time` at the integrator's step size: sets the state's
+   * internal force Q and external force W(`time`) and the increment over the predictor
+   * (`increment`, resized to n_dofs). Returns the linear solves; throws SolverFailure.
+   */
+  unsigned int solve(const StepState& before, double time, Vector<double>& increment);
+
+  /**
+   * After solve() and the caller's correction of `increment`: the displacement, velocity and
+   * acceleration of the state at the step's end, the treatment's rate correction applied.
+   */
+  void finish(const StepState& before, const Vector<double>& increment);
+
+  /**
+   * The balance the last step solved, M a + (Q - W) = contact force: its acceleration and net
+   * force (Q - W) at t_{n+1} for Newmark, at the intermediate times of a dissipative member
+   * (a_{n+1-alpha_m}, Q_{n+1-alpha_f} - W(t_{n+1-alpha_f})). Valid after finish().
+   */
+  void solved_balance(Vector<double>& acceleration, Vector<double>& net_force) const;
+
+  /** W(t_{n+1-alpha_f}) of the last step for a dissipative member; empty for Newmark. */
+  const Vector<double>& step_load() const { return load_at_balance; }
+
+private:
+  const GeneralizedAlpha& integrator;
+  const Vector<double>& mass;
+  const std::vector<bool>& is_fixed_dof;
+  const SurfaceTractions<dim>& loads;
+  ContactConstraints<dim>& contact;
+  const ContactDynamics<dim>& dynamics;
+  ContactNewtonSolver<dim>& solver;
+  StepState current;
+  /** The step's predictor, and the acceleration at t_n it used (a treatment may replace a_n). */
+  Vector<double> predictor, start_acceleration;
+  /**
+   * For a dissipative member, the old state's parts of the last step's balance: a_n as the step
+   * used it, and alpha_f Q(u_n) - W(t_{n+1-alpha_f}); and that load. Empty for Newmark.
+   */
+  Vector<double> old_balance_acceleration, old_balance_net_force, load_at_balance;
+};
+} // namespace dyncontact

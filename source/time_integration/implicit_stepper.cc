@@ -1,0 +1,97 @@
+#include <dyncontact/time_integration/implicit_stepper.h>
+
+namespace dyncontact
+{
+template <int dim>
+ImplicitStepper<dim>::ImplicitStepper(const GeneralizedAlpha& integrator,
+                                      const Vector<double>& lumped_mass,
+                                      const std::vector<bool>& is_fixed_dof,
+                                      const SurfaceTractions<dim>& loads,
+                                      ContactConstraints<dim>& contact,
+                                      const ContactDynamics<dim>& dynamics,
+                                      ContactNewtonSolver<dim>& solver)
+    : integrator(integrator), mass(lumped_mass), is_fixed_dof(is_fixed_dof), loads(loads),
+      contact(contact), dynamics(dynamics), solver(solver)
+{
+}
+
+template <int dim>
+unsigned int
+ImplicitStepper<dim>::solve(const StepState& before, const double time, Vector<double>& increment)
+{
+  // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
+  // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
+  contact.update_geometry(before.displacement);
+  increment.reinit(before.displacement.size());
+  integrator.predict(before.displacement, before.velocity, before.acceleration, predictor);
+  // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).
+  start_acceleration = before.acceleration;
+  const typename ContactDynamics<dim>::StepStart start{before.displacement,
+                                                       before.velocity,
+                                                       before.internal_force,
+                                                       before.external_force,
+                                                       is_fixed_dof};
+  dynamics.adjust_predictor(
+      integrator.rate_map(), contact, mass, start, start_acceleration, predictor);
+  contact.set_reference_gaps(dynamics.reference_gaps(contact, start, predictor));
+  Vector<double> last_configuration = before.displacement; // as an increment over the predictor
+  last_configuration -= predictor;
+  current.external_force = loads.force(time);
+  // A dissipative member balances at t_{n+1-alpha_f}: the solve takes W_eff (GeneralizedAlpha).
+  Vector<double> step_force = current.external_force;
+  if (integrator.family() != IntegratorFamily::newmark)
+  {
+    load_at_balance = loads.force(integrator.load_time(time));
+    Vector<double> old_inertia_force(mass);
+    old_inertia_force.scale(start_acceleration);
+    integrator.effective_force(
+        load_at_balance, old_inertia_force, before.internal_force, step_force);
+    old_balance_acceleration = start_acceleration;
+    old_balance_net_force    = before.internal_force;
+    old_balance_net_force *= integrator.alpha_f();
+    old_balance_net_force -= load_at_balance;
+  }
+  const auto report = solver.solve(
+      predictor, integrator.inertia_factor(), step_force, last_configuration, increment);
+  current.internal_force = solver.internal_force();
+  return report.linear_solves;
+}
+
+template <int dim>
+void ImplicitStepper<dim>::finish(const StepState& before, const Vector<double>& increment)
+{
+  current.displacement = predictor;
+  current.displacement += increment;
+  integrator.update_rates(
+      increment, before.velocity, start_acceleration, current.velocity, current.acceleration);
+  dynamics.correct_rates(integrator.rate_map(),
+                         contact,
+                         mass,
+                         {before.displacement,
+                          before.velocity,
+                          start_acceleration,
+                          current.displacement,
+                          increment,
+                          is_fixed_dof},
+                         current.velocity,
+                         current.acceleration);
+}
+
+template <int dim>
+void ImplicitStepper<dim>::solved_balance(Vector<double>& acceleration,
+                                          Vector<double>& net_force) const
+{
+  acceleration = current.acceleration;
+  net_force    = current.internal_force;
+  if (old_balance_acceleration.size() > 0)
+  {
+    acceleration.sadd(1. - integrator.alpha_m(), integrator.alpha_m(), old_balance_acceleration);
+    net_force.sadd(1. - integrator.alpha_f(), 1., old_balance_net_force);
+  }
+  else
+    net_force -= current.external_force;
+}
+
+template class ImplicitStepper<1>;
+template class ImplicitStepper<2>;
+} // namespace dyncontact
