@@ -1,5 +1,6 @@
 #include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/contact/penalty_sizing.h>
+#include <dyncontact/simulation/checkpoint_file.h>
 #include <dyncontact/simulation/interruption.h>
 #include <dyncontact/simulation/simulation.h>
 #include <dyncontact/time_integration/mode_resolution.h>
@@ -136,32 +137,26 @@ void Simulation<dim>::build_contact_and_solver()
                                                  integrator.alpha_f());
   stepper = std::make_unique<ImplicitStepper<dim>>(
       integrator, mass, is_fixed_dof, *loads, *contact, *contact_dynamics, *solver);
+  body_impulses = std::make_unique<BodyImpulses<dim>>(integrator, mass, is_fixed_dof, *contact);
+  step_measures = std::make_unique<StepMeasures<dim>>(integrator,
+                                                      mass,
+                                                      *bodies,
+                                                      *solver,
+                                                      *contact,
+                                                      *contact_dynamics,
+                                                      *stepper,
+                                                      *body_impulses,
+                                                      model->impact_direction());
 }
 
 template <int dim>
 void Simulation<dim>::index_dofs()
 {
-  monitors                       = model->monitor_nodes(*nodes);
-  const Tensor<1, dim> direction = model->impact_direction();
-  dof_body.assign(dof_handler.n_dofs(), 0);
-  dof_direction.assign(dof_handler.n_dofs(), 0.);
-  is_contact_dof.assign(dof_handler.n_dofs(), false);
+  monitors = model->monitor_nodes(*nodes);
   is_fixed_dof.assign(dof_handler.n_dofs(), false);
   for (const auto dof : fixed_dofs)
     is_fixed_dof[dof] = true;
-  for (const auto& node : nodes->nodes())
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      dof_body[node.dofs[d]]      = node.body;
-      dof_direction[node.dofs[d]] = direction[d];
-    }
-  for (const auto& pair : contact->candidate_pairs())
-    pair.for_each_node(
-        [&](const Node<dim>& node, double)
-        {
-          for (unsigned int d = 0; d < dim; ++d)
-            is_contact_dof[node.dofs[d]] = true;
-        });
+  body_impulses->index(nodes->nodes(), model->impact_direction(), model->n_bodies());
   // The pair nearest to the axis (axisymmetry: r = 0), whose pressure is centre_pressure.
   const auto& pairs = contact->candidate_pairs();
   innermost_pair    = std::min_element(pairs.begin(),
@@ -255,116 +250,22 @@ void Simulation<dim>::set_initial_conditions()
   for (const auto dof : fixed_dofs)
     velocity[dof] = acceleration[dof] = 0.;
   contact->update_geometry(state.displacement);
-  forces_on_bodies = body_forces();
-  impulses.assign(model->n_bodies(), 0.);
-  contact_impulses.assign(model->n_bodies(), 0.);
-  external_work = 0.;
+  body_impulses->start(state);
 }
 
 template <int dim>
 typename Simulation<dim>::State Simulation<dim>::current_state() const
 {
-  return {stepper->state(),
-          contact->state(),
-          solver->tangent_scale(),
-          forces_on_bodies,
-          impulses,
-          contact_impulses,
-          external_work};
+  return {stepper->state(), contact->state(), solver->tangent_scale(), body_impulses->ledger()};
 }
 
 template <int dim>
 void Simulation<dim>::restore(const State& state)
 {
   stepper->state() = state.step;
-  forces_on_bodies = state.body_forces;
   solver->set_tangent_scale(state.tangent_scale);
-  impulses         = state.impulses;
-  contact_impulses = state.contact_impulses;
-  external_work    = state.external_work;
+  body_impulses->ledger() = state.impulses;
   contact->restore(state.contact);
-}
-
-template <int dim>
-std::vector<bool> Simulation<dim>::active_pair_dofs() const
-{
-  std::vector<bool> in_active_pair(dof_handler.n_dofs(), false);
-  for (unsigned int k = 0; k < contact->n_pairs(); ++k)
-    if (contact->is_active(k))
-      contact->candidate_pairs()[k].for_each_node(
-          [&](const Node<dim>& node, double)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              in_active_pair[node.dofs[d]] = true;
-          });
-  return in_active_pair;
-}
-
-template <int dim>
-typename Simulation<dim>::BodyForces Simulation<dim>::body_forces() const
-{
-  // The nodes of the active pairs carry the contact force and fixed DoFs their support's reaction
-  // (a clamped bar end); elsewhere M a + Q - W is only the Newton residual, whose sum over a body
-  // balance_body_momenta() has removed. A dissipative member balances at t_{n+1-alpha_f}, not at
-  // t_{n+1}, so there every DoF's M a + Q - W counts (its sum over a body is sum M a - sum W, as
-  // sum Q = 0): the momentum guard then checks the treatments' velocity corrections only.
-  const StepState& state                 = stepper->state();
-  const std::vector<bool> in_active_pair = active_pair_dofs();
-  const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
-  BodyForces forces{std::vector<double>(model->n_bodies(), 0.),
-                    std::vector<double>(model->n_bodies(), 0.)};
-  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-  {
-    double force = state.external_force[i];
-    if (every_dof || in_active_pair[i] || is_fixed_dof[i])
-    {
-      const double balance =
-          mass[i] * state.acceleration[i] + state.internal_force[i] - state.external_force[i];
-      force += balance;
-      if (!is_fixed_dof[i])
-        forces.contact[dof_body[i]] += dof_direction[i] * balance;
-    }
-    forces.total[dof_body[i]] += dof_direction[i] * force;
-  }
-  return forces;
-}
-
-template <int dim>
-void Simulation<dim>::accumulate_impulses(const State& before)
-{
-  const StepState& state  = stepper->state();
-  const StepState& start  = before.step;
-  const double dt         = integrator.time_step();
-  const double gamma      = integrator.gamma();
-  const BodyForces forces = body_forces();
-  for (unsigned int b = 0; b < impulses.size(); ++b)
-  {
-    impulses[b] += dt * ((1. - gamma) * before.body_forces.total[b] + gamma * forces.total[b]);
-    contact_impulses[b] +=
-        dt * ((1. - gamma) * before.body_forces.contact[b] + gamma * forces.contact[b]);
-  }
-  // The modified scheme's velocity correction is an impulse of its own (the paper's lambda_v):
-  // the part of M (v_{n+1} - v_n) that the Newmark update of the accelerations does not explain.
-  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    if (is_contact_dof[i])
-    {
-      const double correction =
-          dof_direction[i] * mass[i] *
-          (state.velocity[i] - start.velocity[i] -
-           dt * ((1. - gamma) * start.acceleration[i] + gamma * state.acceleration[i]));
-      impulses[dof_body[i]] += correction;
-      contact_impulses[dof_body[i]] += correction;
-    }
-  forces_on_bodies = forces;
-  // The work of the external forces as the integrator applies them (doc/method.md, "The energy
-  // guard's external work"): Newmark, ((1 - gamma) W_n + gamma W_{n+1}) . (u_{n+1} - u_n), the
-  // work term of its energy identity (the trapezoid only for gamma = 1/2); a dissipative member,
-  // whose balance takes the load at t_{n+1-alpha_f}, W(t_{n+1-alpha_f}) . (u_{n+1} - u_n).
-  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    external_work += (stepper->step_load().size() > 0 ? stepper->step_load()[i]
-                                                      : (1. - gamma) * start.external_force[i] +
-                                                            gamma * state.external_force[i]) *
-                     (state.displacement[i] - start.displacement[i]);
 }
 
 template <int dim>
@@ -372,36 +273,10 @@ unsigned int Simulation<dim>::do_time_step(const State& before)
 {
   Vector<double> increment;
   const unsigned int linear_solves = stepper->solve(before.step, time, increment);
-  balance_body_momenta(increment);
+  body_impulses->balance_momenta(increment, solver->last_residual(), integrator.inertia_factor());
   stepper->finish(before.step, increment);
-  accumulate_impulses(before);
+  body_impulses->accumulate(before.step, before.impulses, stepper->state(), stepper->step_load());
   return linear_solves;
-}
-
-template <int dim>
-void Simulation<dim>::balance_body_momenta(Vector<double>& increment) const
-{
-  // The residual r = c M (u - u~) + Q(u) - W - G^T lambda left within the Newton tolerance, summed
-  // over the nodes of a body that carry no contact force, along the impact direction, is a
-  // momentum error of the step that no recovered force accounts for (at the active pairs' nodes
-  // the residual is part of the recovered contact force, body_forces()). A rigid translation t of
-  // the body along that direction changes only the inertia term (Q is invariant, W and G^T lambda
-  // do not depend on it), by c t m at every DoF. Choosing t to cancel the sum makes the step's
-  // momentum change equal its recovered impulse exactly; t is the residual over c M, far below the
-  // gap tolerance.
-  const Vector<double>& residual         = solver->last_residual();
-  const std::vector<bool> in_active_pair = active_pair_dofs();
-  const double c                         = integrator.inertia_factor();
-  std::vector<double> residual_sum(model->n_bodies(), 0.), inertia_sum(model->n_bodies(), 0.);
-  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    if (!is_fixed_dof[i] && dof_direction[i] != 0. && !in_active_pair[i])
-    {
-      residual_sum[dof_body[i]] += dof_direction[i] * residual[i];
-      inertia_sum[dof_body[i]] += c * mass[i] * dof_direction[i] * dof_direction[i];
-    }
-  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-    if (!is_fixed_dof[i] && dof_direction[i] != 0. && inertia_sum[dof_body[i]] > 0.)
-      increment[i] -= residual_sum[dof_body[i]] / inertia_sum[dof_body[i]] * dof_direction[i];
 }
 
 template <int dim>
@@ -440,43 +315,9 @@ Simulation<dim>::pressure_samples(const std::vector<double>& pressures) const
 }
 
 template <int dim>
-typename Simulation<dim>::Measures Simulation<dim>::measure() const
+Measures Simulation<dim>::measure() const
 {
-  const StepState& state        = stepper->state();
-  const Vector<double>&velocity = state.velocity, &acceleration = state.acceleration;
-  Measures measures{};
-  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-  {
-    measures.kinetic_energy += 0.5 * mass[i] * velocity[i] * velocity[i];
-    measures.acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
-  }
-  // After a step the solver's last evaluation was at this displacement: reuse its pass.
-  measures.strain_energy = step_history.n_rows() == 0 ? bodies->strain_energy(state.displacement)
-                                                      : solver->strain_energy();
-  measures.algorithmic_energy = integrator.algorithmic_energy(
-      measures.kinetic_energy, measures.strain_energy, measures.acceleration_energy);
-  if (step_history.n_rows() > 0)
-  {
-    // The balance the step solved: at t_{n+1} for Newmark, at the intermediate times of a
-    // dissipative member (M a_{n+1-alpha_m} + Q_{n+1-alpha_f} - W(t_{n+1-alpha_f})).
-    Vector<double> balance_acceleration, net_force;
-    stepper->solved_balance(balance_acceleration, net_force);
-    const double force_factor = contact_dynamics->contact_force_factor(integrator.rate_map());
-    measures.contact_force =
-        force_factor * contact->recovered_contact_force(mass, balance_acceleration, net_force);
-    const auto side_forces = contact->recovered_side_forces(
-        mass, balance_acceleration, net_force, model->impact_direction());
-    measures.force_imbalance   = force_factor * (side_forces.on_a - side_forces.on_b);
-    measures.velocity_jump     = contact->max_active_normal_jump(velocity);
-    measures.acceleration_jump = contact->max_active_normal_jump(acceleration);
-  }
-  measures.momenta.assign(model->n_bodies(), 0.);
-  for (types::global_dof_index i = 0; i < dof_handler.n_dofs(); ++i)
-  {
-    measures.momenta[dof_body[i]] += mass[i] * dof_direction[i] * velocity[i];
-    measures.momentum_magnitude += mass[i] * std::abs(velocity[i]);
-  }
-  return measures;
+  return step_measures->measure(step_history.n_rows() > 0);
 }
 
 template <int dim>
@@ -493,11 +334,11 @@ StepGuards::Figures Simulation<dim>::guard_figures(const Measures& measures) con
   return {time,
           guarded_energy + energy_at_this_step_size(measures) -
               energy_at_this_step_size(accepted_measures),
-          external_work,
+          body_impulses->ledger().external_work,
           measures.contact_force,
           multiplier_magnitude,
           measures.momenta,
-          impulses,
+          body_impulses->ledger().impulses,
           measures.momentum_magnitude,
           measures.kinetic_energy + measures.strain_energy};
 }
@@ -543,7 +384,8 @@ void Simulation<dim>::record_step(const Measures& measures,
       v_tip += direction[d] * state.velocity[monitors[b].dofs[d]];
       a_tip += direction[d] * state.acceleration[monitors[b].dofs[d]];
     }
-    row.insert(row.end(), {measures.momenta[b], impulses[b], u_tip, v_tip, a_tip});
+    row.insert(row.end(),
+               {measures.momenta[b], body_impulses->ledger().impulses[b], u_tip, v_tip, a_tip});
   }
   step_history.add_row(row);
   const unsigned int frame   = step_history.n_rows() - 1; // VTU files are numbered by row
@@ -603,7 +445,11 @@ void Simulation<dim>::write_reference_and_summary(const std::string& stop)
     model->write_reference(directory, step_history.column("time"), monitors);
   // Every accepted row, the sub-steps of cut steps included, and the contact impulses the run
   // accumulated (equal to the momentum changes they caused, see the momentum guard).
-  model->summarize_run(directory, step_history, contact_impulses, summaries, log.get_stream());
+  model->summarize_run(directory,
+                       step_history,
+                       body_impulses->ledger().contact_impulses,
+                       summaries,
+                       log.get_stream());
 }
 
 template <int dim>
@@ -648,11 +494,7 @@ void Simulation<dim>::serialize_state(Archive& archive)
   archive & stepper->state();
   archive& contact_state.active;
   archive& contact_state.multipliers;
-  archive& forces_on_bodies.total;
-  archive& forces_on_bodies.contact;
-  archive& impulses;
-  archive& contact_impulses;
-  archive& external_work;
+  archive & body_impulses->ledger();
   archive& guarded_energy;
   archive& accepted_measures.kinetic_energy;
   archive& accepted_measures.strain_energy;
@@ -680,60 +522,26 @@ void Simulation<dim>::write_checkpoint()
   if (!is_root_rank)
     return;
   TimerOutput::Scope scope(timer, "output");
-  const std::string file = parameters.output.directory + "/checkpoint.bin";
-  {
-    std::ofstream stream(file + ".tmp", std::ios::binary);
-    boost::archive::binary_oarchive archive(stream);
-    const ProblemFingerprint fingerprint = problem_fingerprint();
-    archive << fingerprint;
-    serialize_state(archive);
-    if (!stream)
-      throw SolverFailure("cannot write the checkpoint " + file + ".tmp");
-  }
-  // Atomic: a run killed while writing leaves the previous checkpoint intact.
-  std::filesystem::rename(file + ".tmp", file);
+  checkpoint_file::write(parameters.output.directory,
+                         problem_fingerprint(),
+                         [this](boost::archive::binary_oarchive& archive)
+                         { serialize_state(archive); });
   checkpoint_time = time;
 }
 
 template <int dim>
 void Simulation<dim>::read_checkpoint(const std::string& directory)
 {
-  open_checkpoint(directory,
-                  [this](boost::archive::binary_iarchive& archive) { serialize_state(archive); });
+  checkpoint_file::read(directory,
+                        problem_fingerprint(),
+                        [this](boost::archive::binary_iarchive& archive)
+                        { serialize_state(archive); });
 }
 
 template <int dim>
 void Simulation<dim>::check_checkpoint(const std::string& directory)
 {
-  open_checkpoint(directory, [](boost::archive::binary_iarchive&) {});
-}
-
-template <int dim>
-template <class ReadState>
-void Simulation<dim>::open_checkpoint(const std::string& directory, const ReadState& read_state)
-{
-  const std::string file = directory + "/checkpoint.bin";
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream)
-    throw InputError("--resume " + directory + ": there is no checkpoint " + file +
-                     " (a run writes one when interrupted or every Output/checkpoint interval "
-                     "steps).");
-  try
-  {
-    boost::archive::binary_iarchive archive(stream);
-    ProblemFingerprint fingerprint;
-    archive >> fingerprint;
-    const std::string difference = problem_fingerprint().difference_from(fingerprint);
-    if (!difference.empty())
-      throw InputError("--resume " + directory +
-                       ": the checkpoint belongs to another problem: " + difference + ".");
-    read_state(archive);
-  }
-  catch (const boost::archive::archive_exception& error)
-  {
-    throw InputError("--resume " + directory + ": " + file + " is not a readable checkpoint (" +
-                     error.what() + ").");
-  }
+  checkpoint_file::read(directory, problem_fingerprint(), [](boost::archive::binary_iarchive&) {});
 }
 
 template <int dim>

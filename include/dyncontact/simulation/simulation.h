@@ -9,8 +9,10 @@
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/discretization/surface_tractions.h>
 #include <dyncontact/models/problem_model.h>
+#include <dyncontact/postprocess/body_impulses.h>
 #include <dyncontact/postprocess/field_output.h>
 #include <dyncontact/postprocess/history.h>
+#include <dyncontact/postprocess/step_measures.h>
 #include <dyncontact/simulation/problem_fingerprint.h>
 #include <dyncontact/simulation/step_guards.h>
 #include <dyncontact/solver/contact_newton_solver.h>
@@ -128,36 +130,18 @@ public:
   const std::vector<Node<dim>>& monitor_nodes() const { return monitors; }
 
 private:
-  /**
-   * Per body, along the impact direction [force]: the total force that changes its momentum
-   * (contact, supports and external forces), and its contact part alone.
-   */
-  struct BodyForces
-  {
-    std::vector<double> total, contact;
-  };
-
   /** The state a failed step returns to. */
   struct State
   {
     StepState step;
     typename ContactConstraints<dim>::State contact;
     double tangent_scale; ///< the solver's, see ContactNewtonSolver::tangent_scale()
-    BodyForces body_forces;
-    std::vector<double> impulses, contact_impulses;
-    double external_work;
+    typename BodyImpulses<dim>::Ledger impulses;
   };
   State current_state() const;
   void restore(const State& state);
 
-  /** What history.csv, the guards and the log read about the current state. */
-  struct Measures
-  {
-    double kinetic_energy, strain_energy, acceleration_energy, algorithmic_energy, contact_force,
-        force_imbalance, velocity_jump, acceleration_jump;
-    std::vector<double> momenta;
-    double momentum_magnitude; ///< sum of |m v| over every DoF
-  };
+  /** The measures of the current state (StepMeasures). */
   Measures measure() const;
   StepGuards::Figures guard_figures(const Measures& measures) const;
 
@@ -167,7 +151,8 @@ private:
   void build_discretization();
   /** Contact (create_contact, penalties sized), its dynamics treatment and the Newton solver. */
   void build_contact_and_solver();
-  /** The per-DoF tables: body, impact direction, contact and fixed flags; the innermost pair. */
+  /** The monitor nodes, the fixed flags, the bodies' DoF tables (BodyImpulses), the innermost pair.
+   */
   void index_dofs();
   /** The steps of the profile times (warning for those after the end); the run's summary line. */
   void schedule_and_log();
@@ -179,29 +164,10 @@ private:
   void check_time_step() const;
   void set_initial_conditions();
   /**
-   * Removes from the converged `increment` the momentum error of each body: a rigid translation
-   * along the impact direction cancels the body's residual summed along it (see the definition).
-   */
-  void balance_body_momenta(Vector<double>& increment) const;
-  /**
    * The step from `before` to `time` at the integrator's step size (the stepper's solve, the
    * momentum balance, its finish), then the impulses; throws SolverFailure.
    */
   unsigned int do_time_step(const State& before);
-  /**
-   * Per body, the force along the impact direction on the nodes of its active pairs and fixed
-   * DoFs (M a + Q - W) plus its total external force, at the current state: with sum Q = 0 over a
-   * free body this is the total force that changes its momentum, up to the Newton residual of its
-   * other nodes. The contact part leaves out the external forces and the supports (fixed DoFs).
-   */
-  BodyForces body_forces() const;
-  /** Per DoF: whether it belongs to a node of an active pair (at the current state). */
-  std::vector<bool> active_pair_dofs() const;
-  /**
-   * Adds the impulses of the step from `before` (Newmark-weighted forces plus rate corrections),
-   * total and contact, and the external work.
-   */
-  void accumulate_impulses(const State& before);
   /**
    * Appends a history row for the current state; `nominal_step` is the nominal step index if the
    * state lies on the nominal time grid (profiles and VTU are written only there), else 0.
@@ -225,13 +191,6 @@ private:
   void write_checkpoint();
   /** Reads `directory`/checkpoint.bin; throws InputError if missing or of another problem. */
   void read_checkpoint(const std::string& directory);
-  /**
-   * Opens `directory`/checkpoint.bin, checks its fingerprint against this problem's and hands the
-   * archive, positioned at the state, to `read_state`; throws InputError if the file is missing,
-   * unreadable or of another problem.
-   */
-  template <class ReadState>
-  void open_checkpoint(const std::string& directory, const ReadState& read_state);
 
   /** prepare(), the output writers, the step controller, the initial record or the checkpoint. */
   void start(const std::string& resume_directory);
@@ -319,15 +278,10 @@ private:
   bool penalty_lowered = false; ///< Contact/penalty factor = auto lowered the springs
   unsigned int n_steps;
   double time;
-  /** Per DoF: its body, and the impact-direction component of its unit vector. */
-  std::vector<unsigned int> dof_body;
-  std::vector<double> dof_direction;
-  std::vector<bool> is_contact_dof;     ///< a DoF of a node of some candidate pair
-  std::vector<bool> is_fixed_dof;       ///< held at zero (fixed_dofs)
-  BodyForces forces_on_bodies;          ///< body_forces() at the current state
-  std::vector<double> impulses;         ///< per body, accumulated since t = 0
-  std::vector<double> contact_impulses; ///< per body, of the contact forces alone, since t = 0
-  double external_work = 0.;            ///< work of the external forces since t = 0
+  std::vector<bool> is_fixed_dof; ///< per DoF: held at zero (fixed_dofs)
+  /** Per body: the forces that change its momentum, their impulses, the external work. */
+  std::unique_ptr<BodyImpulses<dim>> body_impulses;
+  std::unique_ptr<StepMeasures<dim>> step_measures;
   StepGuards guards;
   /**
    * The energy the energy guard reads: E_0 plus the algorithmic-energy change of every accepted

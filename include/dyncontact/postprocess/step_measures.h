@@ -1,0 +1,68 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact_dynamics/contact_dynamics.h>
+#include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/postprocess/body_impulses.h>
+#include <dyncontact/solver/contact_newton_solver.h>
+#include <dyncontact/time_integration/generalized_alpha.h>
+#include <dyncontact/time_integration/implicit_stepper.h>
+
+#include <deal.II/base/tensor.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/** What history.csv, the guards and the log read about one state. */
+struct Measures
+{
+  double kinetic_energy = 0., strain_energy = 0., acceleration_energy = 0.; ///< [energy]
+  double algorithmic_energy = 0.; ///< GeneralizedAlpha::algorithmic_energy() of the three
+  double contact_force      = 0.; ///< recovered from the balance the step solved [force]
+  double force_imbalance    = 0.; ///< body A's recovered force minus body B's [force]
+  double velocity_jump = 0., acceleration_jump = 0.; ///< largest normal jump across active pairs
+  std::vector<double> momenta;                       ///< per body, along the impact direction
+  double momentum_magnitude = 0.;                    ///< sum of |m v| over every DoF
+};
+
+/**
+ * The measures of the stepper's current state: energies, the contact force recovered from the
+ * balance the last step solved (M a + Q - W on the contact nodes, times the treatment's contact
+ * force factor), the force imbalance between the bodies, the normal rate jumps across the active
+ * pairs (Taylor & Papadopoulos 1993, eqs. 19-20) and the bodies' momenta. Everything it reads is
+ * the caller's and must outlive it.
+ */
+template <int dim>
+class StepMeasures
+{
+public:
+  StepMeasures(const GeneralizedAlpha& integrator,
+               const Vector<double>& lumped_mass,
+               const ElasticBodies<dim>& bodies,
+               const ContactNewtonSolver<dim>& solver,
+               const ContactConstraints<dim>& contact,
+               const ContactDynamics<dim>& dynamics,
+               const ImplicitStepper<dim>& stepper,
+               const BodyImpulses<dim>& body_impulses,
+               const Tensor<1, dim>& impact_direction);
+
+  /**
+   * The measures of the current state; `after_a_step` false for the initial state (no balance
+   * solved yet: the contact force and the jumps are zero, the strain energy is evaluated).
+   */
+  Measures measure(bool after_a_step) const;
+
+private:
+  const GeneralizedAlpha& integrator;
+  const Vector<double>& mass;
+  const ElasticBodies<dim>& bodies;
+  const ContactNewtonSolver<dim>& solver;
+  const ContactConstraints<dim>& contact;
+  const ContactDynamics<dim>& dynamics;
+  const ImplicitStepper<dim>& stepper;
+  const BodyImpulses<dim>& body_impulses;
+  const Tensor<1, dim> impact_direction;
+};
+} // namespace dyncontact

@@ -1,0 +1,166 @@
+#include <dyncontact/postprocess/body_impulses.h>
+
+namespace dyncontact
+{
+template <int dim>
+BodyImpulses<dim>::BodyImpulses(const GeneralizedAlpha& integrator,
+                                const Vector<double>& lumped_mass,
+                                const std::vector<bool>& is_fixed_dof,
+                                const ContactConstraints<dim>& contact)
+    : integrator(integrator), mass(lumped_mass), is_fixed_dof(is_fixed_dof), contact(contact)
+{
+}
+
+template <int dim>
+void BodyImpulses<dim>::index(const std::vector<Node<dim>>& nodes,
+                              const Tensor<1, dim>& impact_direction,
+                              const unsigned int n_bodies)
+{
+  this->n_bodies = n_bodies;
+  dof_body.assign(mass.size(), 0);
+  dof_direction.assign(mass.size(), 0.);
+  is_contact_dof.assign(mass.size(), false);
+  for (const auto& node : nodes)
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      dof_body[node.dofs[d]]      = node.body;
+      dof_direction[node.dofs[d]] = impact_direction[d];
+    }
+  for (const auto& pair : contact.candidate_pairs())
+    pair.for_each_node(
+        [&](const Node<dim>& node, double)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            is_contact_dof[node.dofs[d]] = true;
+        });
+}
+
+template <int dim>
+void BodyImpulses<dim>::start(const StepState& state)
+{
+  accumulated.forces = forces(state);
+  accumulated.impulses.assign(n_bodies, 0.);
+  accumulated.contact_impulses.assign(n_bodies, 0.);
+  accumulated.external_work = 0.;
+}
+
+template <int dim>
+std::vector<bool> BodyImpulses<dim>::active_pair_dofs() const
+{
+  std::vector<bool> in_active_pair(mass.size(), false);
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    if (contact.is_active(k))
+      contact.candidate_pairs()[k].for_each_node(
+          [&](const Node<dim>& node, double)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              in_active_pair[node.dofs[d]] = true;
+          });
+  return in_active_pair;
+}
+
+template <int dim>
+typename BodyImpulses<dim>::Forces BodyImpulses<dim>::forces(const StepState& state) const
+{
+  // The nodes of the active pairs carry the contact force and fixed DoFs their support's reaction
+  // (a clamped bar end); elsewhere M a + Q - W is only the Newton residual, whose sum over a body
+  // balance_momenta() has removed. A dissipative member balances at t_{n+1-alpha_f}, not at
+  // t_{n+1}, so there every DoF's M a + Q - W counts (its sum over a body is sum M a - sum W, as
+  // sum Q = 0): the momentum guard then checks the treatments' velocity corrections only.
+  const std::vector<bool> in_active_pair = active_pair_dofs();
+  const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
+  Forces forces{std::vector<double>(n_bodies, 0.), std::vector<double>(n_bodies, 0.)};
+  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+  {
+    double force = state.external_force[i];
+    if (every_dof || in_active_pair[i] || is_fixed_dof[i])
+    {
+      const double balance =
+          mass[i] * state.acceleration[i] + state.internal_force[i] - state.external_force[i];
+      force += balance;
+      if (!is_fixed_dof[i])
+        forces.contact[dof_body[i]] += dof_direction[i] * balance;
+    }
+    forces.total[dof_body[i]] += dof_direction[i] * force;
+  }
+  return forces;
+}
+
+template <int dim>
+void BodyImpulses<dim>::accumulate(const StepState& start,
+                                   const Ledger& before,
+                                   const StepState& state,
+                                   const Vector<double>& step_load)
+{
+  const double dt     = integrator.time_step();
+  const double gamma  = integrator.gamma();
+  const Forces forces = this->forces(state);
+  auto& impulses      = accumulated.impulses;
+  auto& contact_part  = accumulated.contact_impulses;
+  for (unsigned int b = 0; b < impulses.size(); ++b)
+  {
+    impulses[b] += dt * ((1. - gamma) * before.forces.total[b] + gamma * forces.total[b]);
+    contact_part[b] += dt * ((1. - gamma) * before.forces.contact[b] + gamma * forces.contact[b]);
+  }
+  // The modified scheme's velocity correction is an impulse of its own (the paper's lambda_v):
+  // the part of M (v_{n+1} - v_n) that the Newmark update of the accelerations does not explain.
+  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+    if (is_contact_dof[i])
+    {
+      const double correction =
+          dof_direction[i] * mass[i] *
+          (state.velocity[i] - start.velocity[i] -
+           dt * ((1. - gamma) * start.acceleration[i] + gamma * state.acceleration[i]));
+      impulses[dof_body[i]] += correction;
+      contact_part[dof_body[i]] += correction;
+    }
+  accumulated.forces = forces;
+  // The work of the external forces as the integrator applies them (doc/method.md, "The energy
+  // guard's external work"): Newmark, ((1 - gamma) W_n + gamma W_{n+1}) . (u_{n+1} - u_n), the
+  // work term of its energy identity (the trapezoid only for gamma = 1/2); a dissipative member,
+  // whose balance takes the load at t_{n+1-alpha_f}, W(t_{n+1-alpha_f}) . (u_{n+1} - u_n).
+  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+    accumulated.external_work += (step_load.size() > 0 ? step_load[i]
+                                                       : (1. - gamma) * start.external_force[i] +
+                                                             gamma * state.external_force[i]) *
+                                 (state.displacement[i] - start.displacement[i]);
+}
+
+template <int dim>
+void BodyImpulses<dim>::balance_momenta(Vector<double>& increment,
+                                        const Vector<double>& residual,
+                                        const double c) const
+{
+  // The residual r = c M (u - u~) + Q(u) - W - G^T lambda left within the Newton tolerance, summed
+  // over the nodes of a body that carry no contact force, along the impact direction, is a
+  // momentum error of the step that no recovered force accounts for (at the active pairs' nodes
+  // the residual is part of the recovered contact force, forces()). A rigid translation t of
+  // the body along that direction changes only the inertia term (Q is invariant, W and G^T lambda
+  // do not depend on it), by c t m at every DoF. Choosing t to cancel the sum makes the step's
+  // momentum change equal its recovered impulse exactly; t is the residual over c M, far below the
+  // gap tolerance.
+  const std::vector<bool> in_active_pair = active_pair_dofs();
+  std::vector<double> residual_sum(n_bodies, 0.), inertia_sum(n_bodies, 0.);
+  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+    if (!is_fixed_dof[i] && dof_direction[i] != 0. && !in_active_pair[i])
+    {
+      residual_sum[dof_body[i]] += dof_direction[i] * residual[i];
+      inertia_sum[dof_body[i]] += c * mass[i] * dof_direction[i] * dof_direction[i];
+    }
+  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+    if (!is_fixed_dof[i] && dof_direction[i] != 0. && inertia_sum[dof_body[i]] > 0.)
+      increment[i] -= residual_sum[dof_body[i]] / inertia_sum[dof_body[i]] * dof_direction[i];
+}
+
+template <int dim>
+std::vector<double> BodyImpulses<dim>::momenta(const Vector<double>& velocity) const
+{
+  std::vector<double> momenta(n_bodies, 0.);
+  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+    momenta[dof_body[i]] += mass[i] * dof_direction[i] * velocity[i];
+  return momenta;
+}
+
+template class BodyImpulses<1>;
+template class BodyImpulses<2>;
+} // namespace dyncontact
