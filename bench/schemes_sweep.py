@@ -174,26 +174,32 @@ def striker_cell(output, ratio):
     return passes, "%d / %.3f / %.2f" % (count, window, peak)
 
 
-def sphere_cell(output, dt):
-    """(passes, text): largest gain / E0 and final change / E0."""
+def energy_changes(output):
+    """(largest gain / E0, final change / E0) of a run's total energy, or None with the failure text."""
     code = exit_code(output)
     if code != 0 or not os.path.exists(os.path.join(output, "history.csv")):
-        return False, "exit %d" % code
+        return None, "exit %d" % code
     energy = [r["total_energy"] for r in read_csv(os.path.join(output, "history.csv"))]
-    gain = max(e / energy[0] - 1 for e in energy)
-    final = energy[-1] / energy[0] - 1
+    return (max(e / energy[0] - 1 for e in energy), energy[-1] / energy[0] - 1), ""
+
+
+def sphere_cell(output, dt):
+    """(passes, text): largest gain / E0 and final change / E0."""
+    changes, failure = energy_changes(output)
+    if changes is None:
+        return False, failure
+    gain, final = changes
     passes = gain <= GAIN_BOUND and final >= -SPHERE_LOSS_BOUND[dt]
     return passes, "%.1e / %+.2f %%" % (max(gain, 0.0), 100 * final)
 
 
 def kind_cell(output):
     """(passes, text): largest gain / E0 and final change / E0 of one impact of the kind."""
-    code = exit_code(output)
-    if code != 0 or not os.path.exists(os.path.join(output, "history.csv")):
-        return False, "exit %d" % code
-    energy = [r["total_energy"] for r in read_csv(os.path.join(output, "history.csv"))]
-    gain = max(e / energy[0] - 1 for e in energy)
-    return gain <= GAIN_BOUND, "%.1e / %+.3f %%" % (max(gain, 0.0), 100 * (energy[-1] / energy[0] - 1))
+    changes, failure = energy_changes(output)
+    if changes is None:
+        return False, failure
+    gain, final = changes
+    return gain <= GAIN_BOUND, "%.1e / %+.3f %%" % (max(gain, 0.0), 100 * final)
 
 
 def report(results, schemes):
