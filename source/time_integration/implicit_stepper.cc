@@ -16,6 +16,23 @@ ImplicitStepper<dim>::ImplicitStepper(const GeneralizedAlpha& integrator,
 }
 
 template <int dim>
+void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
+                                 const ElasticBodies<dim>& bodies)
+{
+  current.reinit(initial_velocity.size());
+  current.velocity = initial_velocity;
+  bodies.assemble_internal_force(current.displacement, current.internal_force, nullptr);
+  current.external_force = loads.force(0.);
+  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+  {
+    current.acceleration[i] =
+        mass[i] > 0. ? (current.external_force[i] - current.internal_force[i]) / mass[i] : 0.;
+    if (is_fixed_dof[i])
+      current.velocity[i] = current.acceleration[i] = 0.;
+  }
+}
+
+template <int dim>
 unsigned int
 ImplicitStepper<dim>::solve(const StepState& before, const double time, Vector<double>& increment)
 {

@@ -3,6 +3,7 @@
 #include <dyncontact/base/global.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
+#include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/discretization/surface_tractions.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
@@ -37,6 +38,14 @@ public:
                   ContactConstraints<dim>& contact,
                   const ContactDynamics<dim>& dynamics,
                   ContactNewtonSolver<dim>& solver);
+
+  /**
+   * The initial state: u_0 = 0, `initial_velocity` (n_dofs), Q(u_0) of `bodies`, W(0) and the
+   * acceleration of equilibrium M a_0 = W(0) - Q(u_0) (no contact at t = 0); v_0 and a_0 zero at
+   * fixed DoFs, a_0 zero at massless DoFs (Contact/dynamics = mass-redistribution), whose rates
+   * carry no momentum.
+   */
+  void start(const Vector<double>& initial_velocity, const ElasticBodies<dim>& bodies);
 
   /** The state at the last completed step (or the initial one). */
   const StepState& state() const { return current; }

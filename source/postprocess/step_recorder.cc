@@ -1,0 +1,260 @@
+#include <dyncontact/postprocess/step_recorder.h>
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyncontact
+{
+namespace
+{
+/**
+ * The nominal steps of `times` on the grid of `dt` (`n_steps` steps); a time after the end is a
+ * warning naming Output/`entry`.
+ */
+std::set<unsigned int> schedule(const std::vector<double>& times,
+                                const double dt,
+                                const unsigned int n_steps,
+                                const std::string& entry,
+                                const ConditionalOStream& log)
+{
+  std::set<unsigned int> steps;
+  for (const double t : times)
+    if (t > (n_steps + 0.5) * dt)
+      log << "WARNING: Output/" << entry << ": " << t
+          << " lies after the end of the run (t = " << n_steps * dt
+          << "); nothing is written for it.\n";
+    else
+      steps.insert(static_cast<unsigned int>(std::lround(t / dt)));
+  return steps;
+}
+} // namespace
+
+template <int dim>
+StepRecorder<dim>::StepRecorder(const ProblemModel<dim>& model,
+                                const NodeIndex<dim>& nodes,
+                                const ContactConstraints<dim>& contact,
+                                const bool surface_contact,
+                                std::unique_ptr<FieldOutput<dim>> field_output,
+                                const OutputParameters& output,
+                                const double time_step,
+                                const unsigned int n_steps,
+                                TimerOutput& timer,
+                                const ConditionalOStream& log)
+    : model(model), nodes(nodes), contact(contact), surface_contact(surface_contact),
+      field_output(std::move(field_output)), output(output), timer(timer),
+      is_root_rank(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
+      monitors(model.monitor_nodes(nodes)),
+      profile_steps(schedule(output.profile_times, time_step, n_steps, "profile times", log)),
+      vtu_steps(schedule(output.vtu_times, time_step, n_steps, "vtu times", log)), rows(columns())
+{
+  // The pair nearest to the axis (axisymmetry: r = 0), whose pressure is centre_pressure.
+  const auto& pairs = contact.candidate_pairs();
+  innermost_pair    = std::min_element(pairs.begin(),
+                                    pairs.end(),
+                                    [](const ContactPair<dim>& a, const ContactPair<dim>& b) {
+                                      return distance_from_axis(a.slave.position) <
+                                             distance_from_axis(b.slave.position);
+                                    }) -
+                   pairs.begin();
+}
+
+template <int dim>
+std::vector<std::string> StepRecorder<dim>::columns() const
+{
+  std::vector<std::string> columns = {"time",
+                                      "contact_force",
+                                      "contact_multiplier",
+                                      "active_constraints",
+                                      "newton_iterations",
+                                      "kinetic_energy",
+                                      "strain_energy",
+                                      "total_energy",
+                                      "algorithmic_energy",
+                                      "max_penetration",
+                                      "force_imbalance",
+                                      "velocity_jump",
+                                      "acceleration_jump",
+                                      "time_step",
+                                      "step_cuts"};
+  if (dim > 1)
+    for (const std::string column : {"contact_radius", "centre_pressure"})
+      columns.push_back(column);
+  for (unsigned int b = 1; b <= model.n_bodies(); ++b)
+    for (const std::string quantity : {"momentum_", "impulse_", "u_tip_", "v_tip_", "a_tip_"})
+      columns.push_back(quantity + std::to_string(b));
+  return columns;
+}
+
+template <int dim>
+void StepRecorder<dim>::open()
+{
+  if (!is_root_rank)
+    return;
+  rows.attach_file(output.directory + "/history.csv");
+  if (dim == 2)
+    field_output->write_cell_outlines(nodes.nodes());
+}
+
+template <int dim>
+void StepRecorder<dim>::record(const Step& step,
+                               const Measures& measures,
+                               const StepState& state,
+                               const std::vector<double>& impulses)
+{
+  std::vector<double> row = {step.time,
+                             measures.contact_force,
+                             contact.total_pair_force(),
+                             static_cast<double>(contact.n_active()),
+                             static_cast<double>(step.linear_solves),
+                             measures.kinetic_energy,
+                             measures.strain_energy,
+                             measures.kinetic_energy + measures.strain_energy,
+                             measures.algorithmic_energy,
+                             contact.max_penetration(state.displacement),
+                             measures.force_imbalance,
+                             measures.velocity_jump,
+                             measures.acceleration_jump,
+                             step.size,
+                             static_cast<double>(step.cuts)};
+  // Contact pressures (surface contact only): one solve per step, skipped without contact.
+  const std::vector<double> pressures = surface_contact && contact.n_active() > 0
+                                            ? contact.contact_pressures(state.displacement)
+                                            : std::vector<double>(contact.n_pairs(), 0.);
+  if (dim > 1)
+  {
+    row.push_back(contact.contact_radius(state.displacement));
+    row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
+  }
+  const Tensor<1, dim> direction = model.impact_direction();
+  for (unsigned int b = 0; b < monitors.size(); ++b)
+  {
+    double u_tip = 0., v_tip = 0., a_tip = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      u_tip += direction[d] * state.displacement[monitors[b].dofs[d]];
+      v_tip += direction[d] * state.velocity[monitors[b].dofs[d]];
+      a_tip += direction[d] * state.acceleration[monitors[b].dofs[d]];
+    }
+    row.insert(row.end(), {measures.momenta[b], impulses[b], u_tip, v_tip, a_tip});
+  }
+  rows.add_row(row);
+  write_fields(rows.n_rows() - 1, step.nominal_step, step.time, state, pressures);
+}
+
+template <int dim>
+void StepRecorder<dim>::write_fields(const unsigned int frame,
+                                     const unsigned int nominal_step,
+                                     const double time,
+                                     const StepState& state,
+                                     const std::vector<double>& pressures)
+{
+  const bool on_nominal_grid = frame == 0 || nominal_step > 0;
+  if (on_nominal_grid)
+    nominal_rows.push_back(frame);
+  const unsigned int step = frame == 0 ? 0 : nominal_step;
+  const bool vtu_on       = output.vtu_interval > 0 || !vtu_steps.empty();
+  const bool vtu_frame =
+      (on_nominal_grid && ((output.vtu_interval > 0 && step % output.vtu_interval == 0) ||
+                           vtu_steps.count(step) > 0)) ||
+      (vtu_on && output.vtu_during_contact && contact.n_active() > 0);
+  const bool profile = on_nominal_grid && profile_steps.count(step) > 0 && is_root_rank;
+  TimerOutput::Scope scope(timer, "output");
+  const auto samples = surface_contact && (vtu_frame || profile)
+                           ? pressure_samples(pressures, state.displacement)
+                           : std::vector<typename FieldOutput<dim>::PressureSample>();
+  if (vtu_frame)
+  {
+    const Vector<double> traction =
+        surface_contact ? contact_traction(pressures, state.displacement.size()) : Vector<double>();
+    field_output->write_fields(frame,
+                               time,
+                               state.displacement,
+                               state.velocity,
+                               state.acceleration,
+                               surface_contact ? &traction : nullptr);
+    if (surface_contact)
+      field_output->write_contact_surface(frame, time, state.displacement, samples);
+  }
+  if (profile)
+  {
+    field_output->write_profile(
+        time, nodes.nodes(), state.displacement, state.velocity, state.acceleration);
+    if (surface_contact)
+      field_output->write_contact_pressure(time, samples);
+  }
+}
+
+template <int dim>
+Vector<double> StepRecorder<dim>::contact_traction(const std::vector<double>& pressures,
+                                                   const unsigned int n_dofs) const
+{
+  Vector<double> traction(n_dofs);
+  // The slave node's pressure along -n on body A; on body B distributed to the master nodes by
+  // their weights (node-to-node: the facing node's own pressure).
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    contact.candidate_pairs()[k].for_each_node(
+        [&](const Node<dim>& node, const double coefficient)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            traction[node.dofs[d]] +=
+                coefficient * pressures[k] * contact.candidate_pairs()[k].normal[d];
+        });
+  return traction;
+}
+
+template <int dim>
+std::vector<typename FieldOutput<dim>::PressureSample>
+StepRecorder<dim>::pressure_samples(const std::vector<double>& pressures,
+                                    const Vector<double>& displacement) const
+{
+  std::vector<typename FieldOutput<dim>::PressureSample> samples;
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+  {
+    const Node<dim>& slave = contact.candidate_pairs()[k].slave;
+    samples.push_back({slave,
+                       current_position(slave, displacement),
+                       contact.gap(k, displacement),
+                       contact.pair_force(k),
+                       pressures[k],
+                       contact.is_active(k)});
+  }
+  return samples;
+}
+
+template <int dim>
+void StepRecorder<dim>::write_summaries(const std::string& stop,
+                                        const double end_time,
+                                        const std::vector<double>& contact_impulses,
+                                        std::ostream& log)
+{
+  const unsigned int n_rows = rows.n_rows();
+  const double last_time    = n_rows > 0 ? rows.value(n_rows - 1, "time") : 0.;
+  summary_status            = "complete";
+  if (!stop.empty())
+    summary_status = "incomplete: " + stop + " after t = " + format_number(last_time) +
+                     " before the end time " + format_number(end_time);
+  else if (n_rows > 0 && rows.value(n_rows - 1, "contact_force") != 0.)
+    summary_status = "incomplete: still in contact at the end time " + format_number(last_time);
+  if (!is_root_rank)
+    return;
+  if (output.write_exact_solution)
+    model.write_reference(output.directory, rows.column("time"), monitors);
+  // Every accepted row, the sub-steps of cut steps included, and the contact impulses the run
+  // accumulated (equal to the momentum changes they caused, see the momentum guard).
+  model.summarize_run(output.directory, rows, contact_impulses, summary_status, log);
+}
+
+template <int dim>
+History StepRecorder<dim>::nominal_history() const
+{
+  History nominal(rows.column_names());
+  for (const unsigned int row : nominal_rows)
+    nominal.add_row(rows.row(row));
+  return nominal;
+}
+
+template class StepRecorder<1>;
+template class StepRecorder<2>;
+} // namespace dyncontact
