@@ -4,6 +4,36 @@
 
 namespace dyncontact
 {
+namespace
+{
+/**
+ * Throws InputError for a combination of options and parameter file that makes no run;
+ * `action_given`: an option or the parameter file chose the action, named by `action_option`.
+ */
+void check_combination(const CommandLine& command_line,
+                       const bool action_given,
+                       const std::string& action_option)
+{
+  using Action = CommandLine::Action;
+  if (!command_line.resume_directory.empty() &&
+      std::count_if(command_line.overrides.begin(),
+                    command_line.overrides.end(),
+                    [](const std::string& o) { return o.rfind("Output/directory=", 0) == 0; }) > 1)
+    throw InputError("--resume DIR continues in DIR; do not give --output or Output/directory "
+                     "with it.");
+  if (!action_given && !command_line.overrides.empty())
+    throw InputError("no parameter file given; see --help.");
+  if ((command_line.action == Action::help || command_line.action == Action::version ||
+       command_line.action == Action::print_parameters) &&
+      !command_line.parameter_file.empty())
+    throw InputError("conflicting options: a parameter file ('" + command_line.parameter_file +
+                     "') is given with " + action_option + ", which takes none; see --help.");
+  if ((command_line.action == Action::run || command_line.action == Action::validate) &&
+      command_line.parameter_file.empty())
+    throw InputError("no parameter file given; see --help.");
+}
+} // namespace
+
 CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
 {
   CommandLine command_line;
@@ -68,24 +98,9 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
       throw InputError("more than one parameter file given ('" + command_line.parameter_file +
                        "' and '" + argument + "').");
   }
-  if (!command_line.resume_directory.empty() &&
-      std::count_if(command_line.overrides.begin(),
-                    command_line.overrides.end(),
-                    [](const std::string& o) { return o.rfind("Output/directory=", 0) == 0; }) > 1)
-    throw InputError("--resume DIR continues in DIR; do not give --output or Output/directory "
-                     "with it.");
   if (!action_given && !command_line.parameter_file.empty())
     set_action(Action::run, command_line.parameter_file);
-  if (!action_given && !command_line.overrides.empty())
-    throw InputError("no parameter file given; see --help.");
-  if ((command_line.action == Action::help || command_line.action == Action::version ||
-       command_line.action == Action::print_parameters) &&
-      !command_line.parameter_file.empty())
-    throw InputError("conflicting options: a parameter file ('" + command_line.parameter_file +
-                     "') is given with " + action_option + ", which takes none; see --help.");
-  if ((command_line.action == Action::run || command_line.action == Action::validate) &&
-      command_line.parameter_file.empty())
-    throw InputError("no parameter file given; see --help.");
+  check_combination(command_line, action_given, action_option);
   return command_line;
 }
 

@@ -362,6 +362,46 @@ void parse_file(ParameterHandler& prm, const std::string& filename, const bool s
                      "': " + readable_entry_error(exception_text(exception)));
   }
 }
+/**
+ * The first pass over `filename` and the `overrides`: the kind of problem and the numbers of bars,
+ * bodies and pairs, which decide what the second pass declares. Throws InputError.
+ */
+ProblemSize read_problem_size(const std::string& filename,
+                              const std::vector<std::string>& overrides)
+{
+  ProblemSize size;
+  ParameterHandler size_prm;
+  ProblemParameters::declare_parameters(size_prm);
+  size_prm.enter_subsection("Geometry");
+  size_prm.declare_entry("number of bars", "1", Patterns::Integer(1, 100));
+  size_prm.leave_subsection();
+  size_prm.enter_subsection("Bodies");
+  size_prm.declare_entry("number of bodies", "1", Patterns::Integer(1, 100));
+  size_prm.leave_subsection();
+  size_prm.enter_subsection("Contact");
+  size_prm.declare_entry("number of pairs", "0", Patterns::Integer(0, 100));
+  size_prm.leave_subsection();
+  parse_file(size_prm, filename, true);
+  for (const auto& text : overrides)
+    apply_override(size_prm, text, true);
+  ProblemParameters problem;
+  problem.parse_parameters(size_prm);
+  size.geometry = problem.geometry;
+  size_prm.enter_subsection("Geometry");
+  size.n_bars = size_prm.get_integer("number of bars");
+  size_prm.leave_subsection();
+  size_prm.enter_subsection("Bodies");
+  size.n_bodies = size_prm.get_integer("number of bodies");
+  size_prm.leave_subsection();
+  size_prm.enter_subsection("Contact");
+  size.n_pairs = size_prm.get_integer("number of pairs");
+  size_prm.leave_subsection();
+  if (size.geometry == GeometryKind::bars && size.n_pairs > 0)
+    throw InputError("Contact/number of pairs = " + std::to_string(size.n_pairs) +
+                     " is for mesh problems; bars meet at their ends (use 0).");
+  return size;
+}
+
 /// Contact/dynamics when not given: mass redistribution, on the trapezoidal rule with its contact
 /// events resolved (doc/schemes.md, "The default").
 const ContactDynamicsKind default_contact_dynamics = ContactDynamicsKind::mass_redistribution;
@@ -1249,40 +1289,7 @@ ParameterReader::ParameterReader(const std::string& filename,
   buffer << input.rdbuf();
   input_text = buffer.str();
 
-  // First pass: the kind of problem and the number of bodies decide what the second declares.
-  ProblemSize size;
-  {
-    ParameterHandler size_prm;
-    ProblemParameters::declare_parameters(size_prm);
-    size_prm.enter_subsection("Geometry");
-    size_prm.declare_entry("number of bars", "1", Patterns::Integer(1, 100));
-    size_prm.leave_subsection();
-    size_prm.enter_subsection("Bodies");
-    size_prm.declare_entry("number of bodies", "1", Patterns::Integer(1, 100));
-    size_prm.leave_subsection();
-    size_prm.enter_subsection("Contact");
-    size_prm.declare_entry("number of pairs", "0", Patterns::Integer(0, 100));
-    size_prm.leave_subsection();
-    parse_file(size_prm, filename, true);
-    for (const auto& text : overrides)
-      apply_override(size_prm, text, true);
-    ProblemParameters problem;
-    problem.parse_parameters(size_prm);
-    size.geometry = problem.geometry;
-    size_prm.enter_subsection("Geometry");
-    size.n_bars = size_prm.get_integer("number of bars");
-    size_prm.leave_subsection();
-    size_prm.enter_subsection("Bodies");
-    size.n_bodies = size_prm.get_integer("number of bodies");
-    size_prm.leave_subsection();
-    size_prm.enter_subsection("Contact");
-    size.n_pairs = size_prm.get_integer("number of pairs");
-    size_prm.leave_subsection();
-    if (size.geometry == GeometryKind::bars && size.n_pairs > 0)
-      throw InputError("Contact/number of pairs = " + std::to_string(size.n_pairs) +
-                       " is for mesh problems; bars meet at their ends (use 0).");
-  }
-
+  const ProblemSize size = read_problem_size(filename, overrides);
   declare_all(prm, size);
   parse_file(prm, filename, false);
   for (const auto& text : overrides)

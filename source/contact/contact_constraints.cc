@@ -53,27 +53,13 @@ template <int dim>
 void ContactConstraints<dim>::set_force_per_multiplier(const double factor)
 {
   AssertThrow(factor > 0., ExcMessage("The force per multiplier must be positive."));
-  force_per_multiplier = factor;
+  force_factor = factor;
 }
 
 template <int dim>
 unsigned int ContactConstraints<dim>::n_active() const
 {
   return std::count(active.begin(), active.end(), true);
-}
-
-template <int dim>
-double ContactConstraints<dim>::normal_balance(const Node<dim>& node,
-                                               const Tensor<1, dim>& normal,
-                                               const Vector<double>& lumped_mass,
-                                               const Vector<double>& acceleration,
-                                               const Vector<double>& net_internal_force) const
-{
-  double balance = 0.;
-  for (unsigned int d = 0; d < dim; ++d)
-    balance += normal[d] * (lumped_mass[node.dofs[d]] * acceleration[node.dofs[d]] +
-                            net_internal_force[node.dofs[d]]);
-  return balance;
 }
 
 template <int dim>
@@ -193,9 +179,8 @@ void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& dis
     constraint_residual[k] = -constraint_gap(k, displacement);
     if (formulation == ContactFormulation::penalty)
     {
-      add(row, row, -force_per_multiplier / pairs[k].penalty_stiffness);
-      constraint_residual[k] -=
-          force_per_multiplier * multiplier_values[k] / pairs[k].penalty_stiffness;
+      add(row, row, -force_factor / pairs[k].penalty_stiffness);
+      constraint_residual[k] -= force_factor * multiplier_values[k] / pairs[k].penalty_stiffness;
     }
   }
 }
@@ -239,75 +224,6 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
 }
 
 template <int dim>
-double
-ContactConstraints<dim>::recovered_contact_force(const Vector<double>& lumped_mass,
-                                                 const Vector<double>& acceleration,
-                                                 const Vector<double>& net_internal_force) const
-{
-  double force = 0.;
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k])
-      force -= normal_balance(
-          pairs[k].slave, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
-  return force;
-}
-
-template <int dim>
-typename ContactConstraints<dim>::SideForces
-ContactConstraints<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
-                                               const Vector<double>& acceleration,
-                                               const Vector<double>& net_internal_force,
-                                               const Tensor<1, dim>& direction) const
-{
-  // Every node of an active pair between bodies counts once, on its side (a slave node on A, a
-  // master node on B), however many pairs hold it (node-to-segment).
-  SideForces forces{0., 0.};
-  std::vector<bool> counted(lumped_mass.size(), false);
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k] && !pairs[k].against_wall())
-      pairs[k].for_each_node(
-          [&](const Node<dim>& node, const double coefficient)
-          {
-            if (counted[node.dofs[0]])
-              return;
-            counted[node.dofs[0]] = true;
-            const double balance =
-                normal_balance(node, direction, lumped_mass, acceleration, net_internal_force);
-            (coefficient < 0. ? forces.on_a : forces.on_b) += coefficient < 0. ? -balance : balance;
-          });
-  return forces;
-}
-
-template <int dim>
-double ContactConstraints<dim>::max_penetration(const Vector<double>& displacement) const
-{
-  double penetration = 0.;
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    penetration = std::max(penetration, -gap(k, displacement));
-  return penetration;
-}
-
-template <int dim>
-double ContactConstraints<dim>::max_active_normal_jump(const Vector<double>& field) const
-{
-  double jump = 0.;
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k])
-      jump = std::max(jump, std::abs(pairs[k].normal_jump(field)));
-  return jump;
-}
-
-template <int dim>
-double ContactConstraints<dim>::contact_radius(const Vector<double>& displacement) const
-{
-  double radius = 0.;
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k])
-      radius = std::max(radius, distance_from_axis(current_position(pairs[k].slave, displacement)));
-  return radius;
-}
-
-template <int dim>
 std::vector<double>
 ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) const
 {
@@ -317,30 +233,6 @@ ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) c
   for (unsigned int k = 0; k < pairs.size(); ++k)
     forces[k] = pair_force(k);
   return geometry->contact_pressures(displacement, forces);
-}
-
-template <int dim>
-double ContactConstraints<dim>::total_pair_force() const
-{
-  double total = 0.;
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    total += pair_force(k);
-  return total;
-}
-
-template <int dim>
-double ContactConstraints<dim>::event_work(const Vector<double>& old_displacement,
-                                           const Vector<double>& new_displacement,
-                                           const State& old) const
-{
-  double work = 0.;
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (active[k] && !old.active[k])
-      work += 0.5 * pair_force(k) * std::max(0., gap(k, old_displacement));
-    else if (!active[k] && old.active[k])
-      work +=
-          0.5 * force_per_multiplier * old.multipliers[k] * std::max(0., gap(k, new_displacement));
-  return work;
 }
 
 template class ContactConstraints<1>;

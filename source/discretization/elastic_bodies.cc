@@ -104,6 +104,53 @@ void add_point_contribution(const Material& material,
     for (unsigned int j = 0; j < n_local; ++j)
       cell.tangent(i, j) += variations[i].contract(cell.tangent_times_variation[j]) * dV;
 }
+/**
+ * The contributions of one cell (ElasticBodies' CellData: its DoFs, quadrature points, volumes,
+ * shape values, gradients and variations) at `displacement` into `copy`: the internal force if
+ * `with_force`, the tangent if `with_tangent`, the strain energy of each point if `with_energy`.
+ * A failing material point (an inverted element) leaves its message in copy.failure.
+ */
+template <int dim, typename CellData>
+void integrate_one_cell(const CellData& cell,
+                        const Material& material,
+                        const Kinematics<dim>& kinematics,
+                        const std::vector<unsigned int>& local_component,
+                        const Vector<double>& displacement,
+                        const bool with_force,
+                        const bool with_tangent,
+                        const bool with_energy,
+                        CellContribution& copy)
+{
+  const unsigned int n_local = local_component.size();
+  copy.force                 = 0.;
+  copy.tangent               = 0.;
+  copy.energies.resize(cell.volumes.size());
+  copy.failure.clear();
+  for (unsigned int i = 0; i < n_local; ++i)
+    copy.nodal_values[i] = displacement[cell.dofs[i]];
+  try
+  {
+    for (unsigned int q = 0; q < cell.volumes.size(); ++q)
+    {
+      const double* values            = &cell.shape_values[q * n_local];
+      const Tensor<1, dim>* gradients = &cell.shape_gradients[q * n_local];
+      const Point<dim>& X             = cell.points[q];
+      const PointDisplacement<dim> u =
+          interpolate_displacement(local_component, values, gradients, copy.nodal_values.data());
+      const Tensor<2, 3> F = kinematics.deformation_gradient(u.gradient, u.value, X);
+      const double dV      = cell.volumes[q];
+      if (with_energy)
+        copy.energies[q] = material.strain_energy_density(F) * dV;
+      if (with_force)
+        add_point_contribution(
+            material, &cell.variations[q * n_local], n_local, F, dV, with_tangent, copy);
+    }
+  }
+  catch (const SolverFailure& error)
+  {
+    copy.failure = error.what();
+  }
+}
 } // namespace
 
 template <int dim>
@@ -381,36 +428,16 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
                                   NoScratch&,
                                   CellContribution& copy)
   {
-    copy.force   = 0.;
-    copy.tangent = 0.;
-    copy.energies.resize(cell->volumes.size());
-    copy.failure.clear();
-    copy.cell_index          = cell - cells.cbegin();
-    const Material& material = *bodies[cell->body].material;
-    for (unsigned int i = 0; i < n_local; ++i)
-      copy.nodal_values[i] = displacement[cell->dofs[i]];
-    try
-    {
-      for (unsigned int q = 0; q < cell->volumes.size(); ++q)
-      {
-        const double* values            = &cell->shape_values[q * n_local];
-        const Tensor<1, dim>* gradients = &cell->shape_gradients[q * n_local];
-        const Point<dim>& X             = cell->points[q];
-        const PointDisplacement<dim> u =
-            interpolate_displacement(local_component, values, gradients, copy.nodal_values.data());
-        const Tensor<2, 3> F = kinematics.deformation_gradient(u.gradient, u.value, X);
-        const double dV      = cell->volumes[q];
-        if (strain_energy != nullptr)
-          copy.energies[q] = material.strain_energy_density(F) * dV;
-        if (internal_force != nullptr || tangent != nullptr)
-          add_point_contribution(
-              material, &cell->variations[q * n_local], n_local, F, dV, tangent != nullptr, copy);
-      }
-    }
-    catch (const SolverFailure& error)
-    {
-      copy.failure = error.what();
-    }
+    copy.cell_index = cell - cells.cbegin();
+    integrate_one_cell(*cell,
+                       *bodies[cell->body].material,
+                       kinematics,
+                       local_component,
+                       displacement,
+                       internal_force != nullptr || tangent != nullptr,
+                       tangent != nullptr,
+                       strain_energy != nullptr,
+                       copy);
   };
   const auto add_cell = [&](const CellContribution& copy)
   {

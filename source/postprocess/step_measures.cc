@@ -14,7 +14,7 @@ StepMeasures<dim>::StepMeasures(const GeneralizedAlpha& integrator,
                                 const ImplicitStepper<dim>& stepper,
                                 const BodyImpulses<dim>& body_impulses,
                                 const Tensor<1, dim>& impact_direction)
-    : integrator(integrator), mass(lumped_mass), bodies(bodies), solver(solver), contact(contact),
+    : integrator(integrator), mass(lumped_mass), bodies(bodies), solver(solver), fields(contact),
       dynamics(dynamics), stepper(stepper), body_impulses(body_impulses),
       impact_direction(impact_direction)
 {
@@ -44,12 +44,12 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
     stepper.solved_balance(balance_acceleration, net_force);
     const double force_factor = dynamics.contact_force_factor(integrator.rate_map());
     measures.contact_force =
-        force_factor * contact.recovered_contact_force(mass, balance_acceleration, net_force);
+        force_factor * fields.recovered_contact_force(mass, balance_acceleration, net_force);
     const auto side_forces =
-        contact.recovered_side_forces(mass, balance_acceleration, net_force, impact_direction);
+        fields.recovered_side_forces(mass, balance_acceleration, net_force, impact_direction);
     measures.force_imbalance   = force_factor * (side_forces.on_a - side_forces.on_b);
-    measures.velocity_jump     = contact.max_active_normal_jump(velocity);
-    measures.acceleration_jump = contact.max_active_normal_jump(acceleration);
+    measures.velocity_jump     = fields.max_active_normal_jump(velocity);
+    measures.acceleration_jump = fields.max_active_normal_jump(acceleration);
   }
   measures.momenta = body_impulses.momenta(velocity);
   for (types::global_dof_index i = 0; i < mass.size(); ++i)

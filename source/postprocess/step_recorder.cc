@@ -42,9 +42,9 @@ StepRecorder<dim>::StepRecorder(const ProblemModel<dim>& model,
                                 const unsigned int n_steps,
                                 TimerOutput& timer,
                                 const ConditionalOStream& log)
-    : model(model), nodes(nodes), contact(contact), surface_contact(surface_contact),
-      field_output(std::move(field_output)), output(output), timer(timer),
-      is_root_rank(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
+    : model(model), nodes(nodes), contact(contact), fields(contact),
+      surface_contact(surface_contact), field_output(std::move(field_output)), output(output),
+      timer(timer), is_root_rank(Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0),
       monitors(model.monitor_nodes(nodes)),
       profile_steps(schedule(output.profile_times, time_step, n_steps, "profile times", log)),
       vtu_steps(schedule(output.vtu_times, time_step, n_steps, "vtu times", log)), rows(columns())
@@ -105,14 +105,14 @@ void StepRecorder<dim>::record(const Step& step,
 {
   std::vector<double> row = {step.time,
                              measures.contact_force,
-                             contact.total_pair_force(),
+                             fields.total_pair_force(),
                              static_cast<double>(contact.n_active()),
                              static_cast<double>(step.linear_solves),
                              measures.kinetic_energy,
                              measures.strain_energy,
                              measures.kinetic_energy + measures.strain_energy,
                              measures.algorithmic_energy,
-                             contact.max_penetration(state.displacement),
+                             fields.max_penetration(state.displacement),
                              measures.force_imbalance,
                              measures.velocity_jump,
                              measures.acceleration_jump,
@@ -124,7 +124,7 @@ void StepRecorder<dim>::record(const Step& step,
                                             : std::vector<double>(contact.n_pairs(), 0.);
   if (dim > 1)
   {
-    row.push_back(contact.contact_radius(state.displacement));
+    row.push_back(fields.contact_radius(state.displacement));
     row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
   }
   const Tensor<1, dim> direction = model.impact_direction();
@@ -162,12 +162,12 @@ void StepRecorder<dim>::write_fields(const unsigned int frame,
   const bool profile = on_nominal_grid && profile_steps.count(step) > 0 && is_root_rank;
   TimerOutput::Scope scope(timer, "output");
   const auto samples = surface_contact && (vtu_frame || profile)
-                           ? pressure_samples(pressures, state.displacement)
+                           ? fields.pressure_samples(pressures, state.displacement)
                            : std::vector<typename FieldOutput<dim>::PressureSample>();
   if (vtu_frame)
   {
     const Vector<double> traction =
-        surface_contact ? contact_traction(pressures, state.displacement.size()) : Vector<double>();
+        surface_contact ? fields.traction(pressures, state.displacement.size()) : Vector<double>();
     field_output->write_fields(frame,
                                time,
                                state.displacement,
@@ -184,43 +184,6 @@ void StepRecorder<dim>::write_fields(const unsigned int frame,
     if (surface_contact)
       field_output->write_contact_pressure(time, samples);
   }
-}
-
-template <int dim>
-Vector<double> StepRecorder<dim>::contact_traction(const std::vector<double>& pressures,
-                                                   const unsigned int n_dofs) const
-{
-  Vector<double> traction(n_dofs);
-  // The slave node's pressure along -n on body A; on body B distributed to the master nodes by
-  // their weights (node-to-node: the facing node's own pressure).
-  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
-    contact.candidate_pairs()[k].for_each_node(
-        [&](const Node<dim>& node, const double coefficient)
-        {
-          for (unsigned int d = 0; d < dim; ++d)
-            traction[node.dofs[d]] +=
-                coefficient * pressures[k] * contact.candidate_pairs()[k].normal[d];
-        });
-  return traction;
-}
-
-template <int dim>
-std::vector<typename FieldOutput<dim>::PressureSample>
-StepRecorder<dim>::pressure_samples(const std::vector<double>& pressures,
-                                    const Vector<double>& displacement) const
-{
-  std::vector<typename FieldOutput<dim>::PressureSample> samples;
-  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
-  {
-    const Node<dim>& slave = contact.candidate_pairs()[k].slave;
-    samples.push_back({slave,
-                       current_position(slave, displacement),
-                       contact.gap(k, displacement),
-                       contact.pair_force(k),
-                       pressures[k],
-                       contact.is_active(k)});
-  }
-  return samples;
 }
 
 template <int dim>

@@ -169,7 +169,7 @@ void ExactBarSolution::track_events(const unsigned int leftmost_bar,
                                     const bool clamped_left_end,
                                     std::vector<double> gaps)
 {
-  std::priority_queue<double, std::vector<double>, std::greater<double>> arrivals;
+  ArrivalQueue arrivals;
   std::vector<double> closing_speeds(interfaces.size(), 0.0);
 
   const auto emit = [&](internal::StepFunction& wave, const Bar& bar, double t, double value)
@@ -227,26 +227,37 @@ void ExactBarSolution::track_events(const unsigned int leftmost_bar,
         gaps[i] = 0.0;
     }
 
-    double next_time = arrivals.empty() ? std::numeric_limits<double>::infinity() : arrivals.top();
-    for (unsigned int i = 0; i < interfaces.size(); ++i)
-      if (closing_speeds[i] > 0.0)
-        next_time = std::min(next_time, t + gaps[i] / closing_speeds[i]);
+    const double next_time = advance_to_next_event(t, arrivals, gaps, closing_speeds);
     if (next_time > end_time + time_tolerance(end_time))
       break;
-
-    // Events closer than half the lookup tolerance are processed together, so that the lookups at
-    // the group's first instant safely see all jumps arriving within the group.
-    const double group_tolerance = 0.5 * time_tolerance(next_time);
-    while (!arrivals.empty() && arrivals.top() <= next_time + group_tolerance)
-      arrivals.pop();
-    for (unsigned int i = 0; i < interfaces.size(); ++i)
-    {
-      const bool closes =
-          closing_speeds[i] > 0.0 && t + gaps[i] / closing_speeds[i] <= next_time + group_tolerance;
-      gaps[i] = closes ? 0.0 : gaps[i] - closing_speeds[i] * (next_time - t);
-    }
     t = next_time;
   }
+}
+
+double ExactBarSolution::advance_to_next_event(const double t,
+                                               ArrivalQueue& arrivals,
+                                               std::vector<double>& gaps,
+                                               const std::vector<double>& closing_speeds) const
+{
+  double next_time = arrivals.empty() ? std::numeric_limits<double>::infinity() : arrivals.top();
+  for (unsigned int i = 0; i < gaps.size(); ++i)
+    if (closing_speeds[i] > 0.0)
+      next_time = std::min(next_time, t + gaps[i] / closing_speeds[i]);
+  if (next_time > end_time + time_tolerance(end_time))
+    return next_time;
+
+  // Events closer than half the lookup tolerance are processed together, so that the lookups at
+  // the group's first instant safely see all jumps arriving within the group.
+  const double group_tolerance = 0.5 * time_tolerance(next_time);
+  while (!arrivals.empty() && arrivals.top() <= next_time + group_tolerance)
+    arrivals.pop();
+  for (unsigned int i = 0; i < gaps.size(); ++i)
+  {
+    const bool closes =
+        closing_speeds[i] > 0.0 && t + gaps[i] / closing_speeds[i] <= next_time + group_tolerance;
+    gaps[i] = closes ? 0.0 : gaps[i] - closing_speeds[i] * (next_time - t);
+  }
+  return next_time;
 }
 
 unsigned int ExactBarSolution::n_bars() const

@@ -6,6 +6,8 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <utility>
 
 namespace dyncontact
 {
@@ -75,6 +77,31 @@ double extrapolated_contact_limit(const double t_boundary,
   const double zero = t_outer - g_outer * (t_inner - t_outer) / (g_inner - g_outer);
   return t_boundary < t_outer ? std::max(zero, t_boundary) : std::min(zero, t_boundary);
 }
+/**
+ * The peak of a force history as (force, time): the vertex of the parabola through the largest
+ * sample and its neighbours, if it is concave: F0 + b s + c s^2 in s = t - t0, from the divided
+ * differences of the two steps h1 = t0 - t_before and h2 = t_after - t0 (for h1 = h2 = dt:
+ * b = (F+ - F-) / (2 dt), c = (F+ - 2 F0 + F-) / (2 dt^2)); else the largest sample.
+ */
+std::pair<double, double> interpolated_peak(const std::vector<double>& times,
+                                            const std::vector<double>& force)
+{
+  const std::size_t largest =
+      static_cast<std::size_t>(std::max_element(force.begin(), force.end()) - force.begin());
+  if (largest > 0 && largest + 1 < force.size())
+  {
+    const double h1          = times[largest] - times[largest - 1];
+    const double h2          = times[largest + 1] - times[largest];
+    const double slope_left  = (force[largest] - force[largest - 1]) / h1;
+    const double slope_right = (force[largest + 1] - force[largest]) / h2;
+    const double b           = (slope_left * h2 + slope_right * h1) / (h1 + h2);
+    const double c           = (slope_right - slope_left) / (h1 + h2);
+    if (c < 0.0)
+      return {force[largest] - b * b / (4.0 * c), times[largest] - b / (2.0 * c)};
+  }
+  return {force[largest], times[largest]};
+}
+
 } // namespace
 
 ImpactMeasures measure_impact(const std::vector<double>& times, const std::vector<double>& force)
@@ -118,28 +145,7 @@ ImpactMeasures measure_impact(const std::vector<double>& times, const std::vecto
   }
   measures.duration = measures.contact_end - measures.contact_start;
 
-  // Peak: the vertex of the parabola through the largest sample and its neighbours, if it is
-  // concave: F0 + b s + c s^2 in s = t - t0, from the divided differences of the two steps
-  // h1 = t0 - t_before and h2 = t_after - t0 (for h1 = h2 = dt: b = (F+ - F-) / (2 dt),
-  // c = (F+ - 2 F0 + F-) / (2 dt^2)).
-  const std::size_t largest =
-      static_cast<std::size_t>(std::max_element(force.begin(), force.end()) - force.begin());
-  measures.peak_force = force[largest];
-  measures.peak_time  = times[largest];
-  if (largest > 0 && largest + 1 < n_samples)
-  {
-    const double h1          = times[largest] - times[largest - 1];
-    const double h2          = times[largest + 1] - times[largest];
-    const double slope_left  = (force[largest] - force[largest - 1]) / h1;
-    const double slope_right = (force[largest + 1] - force[largest]) / h2;
-    const double b           = (slope_left * h2 + slope_right * h1) / (h1 + h2);
-    const double c           = (slope_right - slope_left) / (h1 + h2);
-    if (c < 0.0)
-    {
-      measures.peak_force = force[largest] - b * b / (4.0 * c);
-      measures.peak_time  = times[largest] - b / (2.0 * c);
-    }
-  }
+  std::tie(measures.peak_force, measures.peak_time) = interpolated_peak(times, force);
 
   // Impulse: trapezoidal rule over all samples, each step with its own size.
   for (std::size_t n = 0; n + 1 < n_samples; ++n)

@@ -1,13 +1,8 @@
-#include <dyncontact/contact/contact_factory.h>
-#include <dyncontact/contact/penalty_sizing.h>
 #include <dyncontact/simulation/checkpoint_file.h>
 #include <dyncontact/simulation/interruption.h>
 #include <dyncontact/simulation/simulation.h>
-#include <dyncontact/time_integration/mode_resolution.h>
-#include <dyncontact/time_integration/stability_check.h>
 
 #include <deal.II/base/utilities.h>
-#include <deal.II/grid/grid_tools.h>
 
 #include <algorithm>
 #include <boost/archive/binary_iarchive.hpp>
@@ -34,87 +29,33 @@ void Simulation<dim>::prepare()
 {
   if (prepared)
     return;
-  discretization                            = std::make_unique<BodyDiscretization<dim>>(*model);
-  mass                                      = discretization->bodies->lumped_mass();
-  const ContactDescription<dim> description = model->contact_description(*discretization->nodes);
-  build_contact_and_solver(description);
-  std::set<types::boundary_id> slave_surfaces;
-  for (const auto& pair : description.surface_pairs)
-    slave_surfaces.insert(pair.surface_a);
-  for (const auto& pair : description.plane_pairs)
-    slave_surfaces.insert(pair.surface);
-  build_recorder(slave_surfaces);
-  log_summary();
-  check_time_step();
-  set_initial_conditions();
+  problem    = std::make_unique<ContactProblem<dim>>(*model, parameters, integrator, timer);
+  acceptance = std::make_unique<StepAcceptance<dim>>(
+      parameters.guards, integrator, *problem->contact, *problem->dynamics, *problem->impulses);
+  build_recorder();
+  problem->log_summary(log);
+  problem->check_time_step(log);
+  problem->set_initial_conditions();
   prepared = true;
 }
 
 template <int dim>
-void Simulation<dim>::build_contact_and_solver(const ContactDescription<dim>& description)
+void Simulation<dim>::build_recorder()
 {
-  const BodyDiscretization<dim>& d = *discretization;
-  const PenaltySizingInput sizing{
-      mass, integrator.time_step(), d.highest_frequency * integrator.time_step()};
-  Contact<dim> built = create_contact(
-      description, d.dof_handler, *d.kinematics, *d.nodes, parameters.contact, sizing);
-  surface_contact  = std::move(built.surfaces);
-  contact          = std::move(built.constraints);
-  penalty_factor   = built.penalty_factor;
-  penalty_lowered  = built.penalty_lowered_to_resolve_springs;
-  contact_dynamics = create_contact_dynamics<dim>(parameters.contact.dynamics);
-  // The multipliers as the contact force of the balance the step solves, on every integrator and
-  // treatment (doc/method.md, "Contact forces on every integrator").
-  contact->set_force_per_multiplier(contact_dynamics->contact_force_factor(integrator.rate_map()) *
-                                    (1. - integrator.alpha_f()));
-  // Mass redistribution: the contact nodes lose their mass only now, after the penalty sizing,
-  // which weighs a pair's spring by its nodes' masses.
-  if (contact_dynamics->contact_nodes_massless())
-    mass = d.bodies->lumped_mass(contact->contact_dofs(d.dof_handler.n_dofs()));
-  solver =
-      std::make_unique<ContactNewtonSolver<dim>>(d.dof_handler,
-                                                 *d.bodies,
-                                                 *contact,
-                                                 mass,
-                                                 d.fixed_dofs,
-                                                 parameters.newton,
-                                                 GridTools::minimal_cell_diameter(d.triangulation),
-                                                 timer,
-                                                 integrator.alpha_f());
-  stepper = std::make_unique<ImplicitStepper<dim>>(
-      integrator, mass, d.is_fixed_dof, *d.loads, *contact, *contact_dynamics, *solver);
-  body_impulses = std::make_unique<BodyImpulses<dim>>(integrator, mass, d.is_fixed_dof, *contact);
-  body_impulses->index(d.nodes->nodes(), model->impact_direction(), model->n_bodies());
-  step_measures = std::make_unique<StepMeasures<dim>>(integrator,
-                                                      mass,
-                                                      *d.bodies,
-                                                      *solver,
-                                                      *contact,
-                                                      *contact_dynamics,
-                                                      *stepper,
-                                                      *body_impulses,
-                                                      model->impact_direction());
-  acceptance    = std::make_unique<StepAcceptance<dim>>(
-      parameters.guards, integrator, *contact, *contact_dynamics, *body_impulses);
-}
-
-template <int dim>
-void Simulation<dim>::build_recorder(const std::set<types::boundary_id>& slave_surfaces)
-{
-  const BodyDiscretization<dim>& d = *discretization;
+  const BodyDiscretization<dim>& d = problem->discretization;
   std::vector<std::shared_ptr<const Material>> materials;
   for (const BodyMaterial& body : model->body_materials())
     materials.push_back(body.material);
   recorder = std::make_unique<StepRecorder<dim>>(
       *model,
       *d.nodes,
-      *contact,
-      surface_contact != nullptr,
+      *problem->contact,
+      problem->surface_contact != nullptr,
       std::make_unique<FieldOutput<dim>>(d.dof_handler,
                                          d.mapping,
                                          *d.kinematics,
                                          materials,
-                                         slave_surfaces,
+                                         problem->slave_surfaces,
                                          parameters.output.directory),
       parameters.output,
       parameters.time.time_step,
@@ -124,88 +65,33 @@ void Simulation<dim>::build_recorder(const std::set<types::boundary_id>& slave_s
 }
 
 template <int dim>
-void Simulation<dim>::log_summary() const
-{
-  const double dt                = parameters.time.time_step;
-  const double highest_frequency = discretization->highest_frequency;
-  log << "dyncontact: " << discretization->dof_handler.n_dofs() << " displacement DoFs, "
-      << contact->n_pairs() << " contact candidate(s), " << n_steps << " steps of dt = " << dt
-      << ", " << integrator.description() << ", contact dynamics "
-      << contact_dynamics_names().name(parameters.contact.dynamics) << ", "
-      << contact_formulation_names().name(parameters.contact.formulation) << " contact\n";
-  if (std::abs(n_steps * dt - parameters.time.end_time) > 1e-9 * parameters.time.end_time)
-    log << "  note: end time " << parameters.time.end_time
-        << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
-  if (is_root_rank)
-    model->print_summary(log.get_stream(), dt);
-  log << "  highest mode (element eigenvalue bound): omega_max dt = " << highest_frequency * dt;
-  if (std::isfinite(integrator.stability_limit()))
-    log << ", stability limit " << integrator.stability_limit();
-  log << "\n";
-  if (parameters.contact.formulation == ContactFormulation::penalty &&
-      parameters.contact.automatic_penalty)
-    log << "  penalty factor (auto): " << penalty_factor
-        << ", stiffest contact spring omega dt = " << penalty_spring_omega_dt(*contact, mass, dt)
-        << ", bodies' highest mode omega dt = " << highest_frequency * dt << "\n";
-}
-
-template <int dim>
-void Simulation<dim>::check_time_step() const
-{
-  const double body_omega_dt   = discretization->highest_frequency * integrator.time_step();
-  const double spring_omega_dt = penalty_spring_omega_dt(*contact, mass, integrator.time_step());
-  // A resolved mesh (omega dt <= 2, Courant number about 1) with an unresolved penalty spring: the
-  // spring is the one frequency the step cannot follow, and the contact node chatters (see
-  // size_automatic_penalty()).
-  if (spring_omega_dt > resolved_omega_dt && is_resolved(body_omega_dt))
-    log << "WARNING: the penalty spring (Contact/penalty factor = " << penalty_factor
-        << ") has omega dt = " << spring_omega_dt << " while the bodies' highest mode has "
-        << body_omega_dt
-        << ": expect contact chatter and step cuts by the energy guard. A penalty factor <= "
-        << penalty_factor * std::pow(1. / spring_omega_dt, 2)
-        << " (or auto) resolves the spring (omega dt <= 1), at the cost of more penetration.\n";
-
-  check_stability(integrator, body_omega_dt, spring_omega_dt, penalty_lowered);
-}
-
-template <int dim>
-void Simulation<dim>::set_initial_conditions()
-{
-  Vector<double> velocity(discretization->dof_handler.n_dofs());
-  for (const auto& node : discretization->nodes->nodes())
-  {
-    const Tensor<1, dim> v0 = model->initial_velocity(node.body, node.position);
-    for (unsigned int d = 0; d < dim; ++d)
-      velocity[node.dofs[d]] = v0[d];
-  }
-  stepper->start(velocity, *discretization->bodies);
-  contact->update_geometry(stepper->state().displacement);
-  body_impulses->start(stepper->state());
-}
-
-template <int dim>
 typename Simulation<dim>::State Simulation<dim>::current_state() const
 {
-  return {stepper->state(), contact->state(), solver->tangent_scale(), body_impulses->ledger()};
+  return {problem->stepper->state(),
+          problem->contact->state(),
+          problem->solver->tangent_scale(),
+          problem->impulses->ledger()};
 }
 
 template <int dim>
 void Simulation<dim>::restore(const State& state)
 {
-  stepper->state() = state.step;
-  solver->set_tangent_scale(state.tangent_scale);
-  body_impulses->ledger() = state.impulses;
-  contact->restore(state.contact);
+  problem->stepper->state() = state.step;
+  problem->solver->set_tangent_scale(state.tangent_scale);
+  problem->impulses->ledger() = state.impulses;
+  problem->contact->restore(state.contact);
 }
 
 template <int dim>
 unsigned int Simulation<dim>::do_time_step(const State& before)
 {
   Vector<double> increment;
-  const unsigned int linear_solves = stepper->solve(before.step, time, increment);
-  body_impulses->balance_momenta(increment, solver->last_residual(), integrator.inertia_factor());
-  stepper->finish(before.step, increment);
-  body_impulses->accumulate(before.step, before.impulses, stepper->state(), stepper->step_load());
+  const unsigned int linear_solves = problem->stepper->solve(before.step, time, increment);
+  problem->impulses->balance_momenta(
+      increment, problem->solver->last_residual(), integrator.inertia_factor());
+  problem->stepper->finish(before.step, increment);
+  problem->impulses->accumulate(
+      before.step, before.impulses, problem->stepper->state(), problem->stepper->step_load());
   return linear_solves;
 }
 
@@ -218,8 +104,8 @@ void Simulation<dim>::record(const Measures& measures,
   const double size = recorder->history().n_rows() == 0 ? 0. : integrator.time_step();
   recorder->record({time, size, nominal_step, linear_solves, cuts},
                    measures,
-                   stepper->state(),
-                   body_impulses->ledger().impulses);
+                   problem->stepper->state(),
+                   problem->impulses->ledger().impulses);
 }
 
 template <int dim>
@@ -227,7 +113,7 @@ void Simulation<dim>::write_summaries(const std::string& stop)
 {
   recorder->write_summaries(stop,
                             n_steps * parameters.time.time_step,
-                            body_impulses->ledger().contact_impulses,
+                            problem->impulses->ledger().contact_impulses,
                             log.get_stream());
 }
 
@@ -244,11 +130,7 @@ ProblemFingerprint Simulation<dim>::problem_fingerprint() const
   ProblemFingerprint fingerprint;
   fingerprint.n_ranks        = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
   fingerprint.entries        = parameters.problem_entries;
-  fingerprint.discretization = "dimension " + std::to_string(dim) + ", " +
-                               std::to_string(discretization->dof_handler.n_dofs()) + " DoFs, " +
-                               std::to_string(contact->n_pairs()) + " contact candidates, " +
-                               std::to_string(model->n_bodies()) + " bodies, node positions " +
-                               discretization->node_checksum();
+  fingerprint.discretization = problem->description();
   return fingerprint;
 }
 
@@ -256,13 +138,13 @@ template <int dim>
 template <class Archive>
 void Simulation<dim>::serialize_state(Archive& archive)
 {
-  typename ContactConstraints<dim>::State contact_state = contact->state();
-  double tangent_scale                                  = solver->tangent_scale();
+  typename ContactConstraints<dim>::State contact_state = problem->contact->state();
+  double tangent_scale                                  = problem->solver->tangent_scale();
   archive& time;
-  archive & stepper->state();
+  archive & problem->stepper->state();
   archive& contact_state.active;
   archive& contact_state.multipliers;
-  archive & body_impulses->ledger();
+  archive & problem->impulses->ledger();
   archive&* acceptance;
   archive&* controller;
   archive&* recorder;
@@ -270,8 +152,8 @@ void Simulation<dim>::serialize_state(Archive& archive)
   archive& tangent_scale;
   if (Archive::is_loading::value)
   {
-    contact->restore(contact_state);
-    solver->set_tangent_scale(tangent_scale);
+    problem->contact->restore(contact_state);
+    problem->solver->set_tangent_scale(tangent_scale);
   }
 }
 
@@ -300,7 +182,7 @@ void Simulation<dim>::start(const std::string& resume_directory)
   prepare();
   controller = std::make_unique<StepController>(
       parameters.time.time_step, n_steps, parameters.time.max_step_cuts);
-  const Measures initial = step_measures->measure(false);
+  const Measures initial = problem->measures->measure(false);
   acceptance->initialize(initial);
   if (resume_directory.empty())
     record(initial, 0, 0, 0);
@@ -331,12 +213,12 @@ Simulation<dim>::solve_step(const State& before, Measures& measures, unsigned in
     try
     {
       linear_solves += do_time_step(before);
-      measures = step_measures->measure(true);
+      measures = problem->measures->measure(true);
       failure  = acceptance->check(time,
                                   measures,
                                   before.step.displacement,
                                   before.contact,
-                                  stepper->state().displacement,
+                                  problem->stepper->state().displacement,
                                   controller->can_cut());
       if (failure.empty())
       {
@@ -419,12 +301,12 @@ void Simulation<dim>::finish()
   // Contact candidates that never closed: most often a velocity of the wrong sign or a gap the
   // run is too short to cross (the run is right, but not the problem meant).
   const std::vector<double> active = history().column("active_constraints");
-  if (contact->n_pairs() > 0 &&
+  if (problem->contact->n_pairs() > 0 &&
       std::all_of(active.begin(), active.end(), [](double n) { return n == 0.; }))
-    log << "WARNING: no contact pair closed during the run (" << contact->n_pairs()
+    log << "WARNING: no contact pair closed during the run (" << problem->contact->n_pairs()
         << " candidates): check the initial velocities' directions, the gap and the end time.\n";
   progress.report_totals(n_factorizations(),
-                         solver->n_low_rank_updates(),
+                         problem->solver->n_low_rank_updates(),
                          timer.get_summary_data(TimerOutput::total_wall_time),
                          parameters.output.directory);
 }
@@ -447,12 +329,12 @@ void Simulation<dim>::run(const std::string& resume_directory)
     checkpoint_or_stop(nominal_time_reached, nominal_step);
     const auto active_before =
         std::count(before.contact.active.begin(), before.contact.active.end(), true);
-    progress.end_step(active_before > 0 || contact->n_active() > 0);
+    progress.end_step(active_before > 0 || problem->contact->n_active() > 0);
     progress.report(nominal_step,
                     time,
                     controller->finished(),
-                    static_cast<long>(contact->n_active()) != active_before,
-                    contact->n_active(),
+                    static_cast<long>(problem->contact->n_active()) != active_before,
+                    problem->contact->n_active(),
                     history().value(history().n_rows() - 1, "algorithmic_energy"));
   }
   finish();

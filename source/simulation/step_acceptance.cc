@@ -10,8 +10,9 @@ StepAcceptance<dim>::StepAcceptance(const GuardParameters& parameters,
                                     const ContactConstraints<dim>& contact,
                                     const ContactDynamics<dim>& dynamics,
                                     const BodyImpulses<dim>& impulses)
-    : parameters(parameters), integrator(integrator), contact(contact), dynamics(dynamics),
-      impulses(impulses), guards(parameters, std::isfinite(integrator.stability_limit()))
+    : parameters(parameters), integrator(integrator), contact(contact), fields(contact),
+      dynamics(dynamics), impulses(impulses),
+      guards(parameters, std::isfinite(integrator.stability_limit()))
 {
 }
 
@@ -86,7 +87,7 @@ StepAcceptance<dim>::event_failure(const Vector<double>& displacement_before,
   if (!dynamics.contact_nodes_massless() || parameters.contact_event_tolerance >= 1. ||
       energy == 0.)
     return "";
-  const double work = contact.event_work(displacement_before, displacement, contact_before);
+  const double work = fields.event_work(displacement_before, displacement, contact_before);
   if (!(work > parameters.contact_event_tolerance * std::abs(energy)))
     return "";
   return "contact event work " + format_number(work / std::abs(energy)) +

@@ -2,6 +2,7 @@
 // finite differences of the gap, and the active-set update on a toy set of pairs.
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact/penalty_sizing.h>
+#include <dyncontact/postprocess/contact_fields.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -112,12 +113,12 @@ TEST(ContactConstraints, ActiveSetEntersOnPenetrationAndLeavesOnTension)
   EXPECT_TRUE(contact.is_active(3));
   EXPECT_FALSE(contact.update_active_set(closed, 1e-6, 1e-6));
 }
-// The event work of a step (ContactConstraints::event_work()): (1/2) F_{n+1} g(u_n) for a pair that
+// The event work of a step (ContactFields::event_work()): (1/2) F_{n+1} g(u_n) for a pair that
 // closed and (1/2) F_n g(u_{n+1}) for one that opened, nothing for a pair that stayed closed or
 // open. Three wall pairs, by hand: pair 0 closes across the gap 0.02 with force 3 (work 0.03),
 // pair 1 opens to the gap 0.01 from force 4 (work 0.02), pair 2 stays closed (force 5, gap 0).
 // Exact in binary up to the round-off of the sums (bound 1e-15).
-TEST(ContactConstraints, EventWorkIsHalfTheForceTimesTheGapTheEventCrosses)
+TEST(ContactFields, EventWorkIsHalfTheForceTimesTheGapTheEventCrosses)
 {
   const Tensor<1, 2> up({0., 1.});
   std::vector<ContactPair<2>> pairs;
@@ -139,10 +140,11 @@ TEST(ContactConstraints, EventWorkIsHalfTheForceTimesTheGapTheEventCrosses)
   multipliers[0] = 3., multipliers[2] = 5.;
   contact.add_multiplier_increment(multipliers);
   ASSERT_TRUE(contact.is_active(0) && !contact.is_active(1) && contact.is_active(2));
-  EXPECT_NEAR(contact.event_work(old_u, new_u, old), 0.5 * 3. * 0.02 + 0.5 * 4. * 0.01, 1e-15);
+  const ContactFields<2> fields(contact);
+  EXPECT_NEAR(fields.event_work(old_u, new_u, old), 0.5 * 3. * 0.02 + 0.5 * 4. * 0.01, 1e-15);
   // The force per multiplier scales both (the alpha members report f lambda).
   contact.set_force_per_multiplier(0.5);
-  EXPECT_NEAR(contact.event_work(old_u, new_u, old), 0.5 * (0.03 + 0.02), 1e-15);
+  EXPECT_NEAR(fields.event_work(old_u, new_u, old), 0.5 * (0.03 + 0.02), 1e-15);
 }
 
 // Penalty springs against the time step: omega dt = dt sqrt(k / m_r), m_r = m_a m_b / (m_a + m_b)

@@ -81,6 +81,8 @@ public:
    * multiplier with (doc/method.md, "Contact forces on every integrator").
    */
   void set_force_per_multiplier(double factor);
+  /** The factor of set_force_per_multiplier() (1 until set). */
+  double force_per_multiplier() const { return force_factor; }
   const std::vector<ContactPair<dim>>& candidate_pairs() const { return pairs; }
   unsigned int n_active() const;
   bool is_active(unsigned int pair) const { return active[pair]; }
@@ -153,77 +155,13 @@ public:
                          double force_tolerance);
 
   /**
-   * Total interface force, compression positive, recovered from the equations of motion of the
-   * body-A nodes of the active pairs: the sum of -n . (M a + Q(u) - W) at those nodes
-   * (`net_internal_force` = Q(u) - W). It equals the sum of the multipliers for the classical
-   * scheme and differs at an impact step of the modified one, whose corrected accelerations carry
-   * the interface force.
-   */
-  double recovered_contact_force(const Vector<double>& lumped_mass,
-                                 const Vector<double>& acceleration,
-                                 const Vector<double>& net_internal_force) const;
-
-  /**
-   * The interface force of the active pairs between bodies (wall pairs left out) recovered from
-   * the nodes' balances (M a + Q - W) along `direction` (a unit vector, e.g. the impact
-   * direction) on each side: `on_a` from the slave nodes of body A (compression positive),
-   * `on_b` from the master nodes of body B (the force A exerts on B), each node once however
-   * many pairs hold it. Equal up to round-off, also after the modified scheme's correction, which
-   * conserves momentum; their difference measures the force balance.
-   */
-  struct SideForces
-  {
-    double on_a;
-    double on_b;
-  };
-  SideForces recovered_side_forces(const Vector<double>& lumped_mass,
-                                   const Vector<double>& acceleration,
-                                   const Vector<double>& net_internal_force,
-                                   const Tensor<1, dim>& direction) const;
-
-  /**
    * The contact force of candidate `pair` [force], compression positive: its multiplier times
    * the force per multiplier (set_force_per_multiplier()) if it is active, else zero.
    */
   double pair_force(unsigned int pair) const
   {
-    return active[pair] ? force_per_multiplier * multiplier_values[pair] : 0.;
+    return active[pair] ? force_factor * multiplier_values[pair] : 0.;
   }
-
-  /** Sum of pair_force() over the pairs [force]. */
-  double total_pair_force() const;
-
-  /**
-   * The work of the contact events of a step [force x length], from the state `old` at u_n
-   * (`old_displacement`) to the current one at u_{n+1} (`new_displacement`): (1/2) sum over the
-   * pairs that closed (active now, not in `old`) of pair_force() times the gap g_k(u_n), plus
-   * (1/2) sum over the pairs that opened (active in `old`, not now) of their old force
-   * force_per_multiplier lambda_k,n times the gap g_k(u_{n+1}) (positive parts). With massless
-   * contact nodes (mass redistribution) on the trapezoidal rule these are exactly the energy the
-   * step loses at the closings and gains at the releases, for linear elasticity and gaps: the
-   * step's energy change is (1/2) sum_k (lambda_k,n + lambda_k,n+1)(g_k,n+1 - g_k,n)
-   * (doc/schemes.md, "Mass redistribution with resolved contact events").
-   */
-  double event_work(const Vector<double>& old_displacement,
-                    const Vector<double>& new_displacement,
-                    const State& old) const;
-
-  /** The largest penetration max(0, -g) over all candidate pairs at `displacement`. */
-  double max_penetration(const Vector<double>& displacement) const;
-
-  /**
-   * The largest |[[f]]| = |n . (f_B - f_A)| over the active pairs of a nodal field (velocity:
-   * length/time, acceleration: length/time^2); zero if none is active. The paper's modified
-   * Newmark (Taylor & Papadopoulos 1993, eqs. 22-23) makes it zero for velocity and acceleration.
-   */
-  double max_active_normal_jump(const Vector<double>& field) const;
-
-  /**
-   * The largest distance of the current position of node A from the axis of the last coordinate
-   * (r in axisymmetry, where it is the contact radius) over the active pairs; zero if none is
-   * active. Meaningless in 1D, where it is zero.
-   */
-  double contact_radius(const Vector<double>& displacement) const;
 
   /**
    * The contact pressure at every pair [force/area] (see ContactGeometry::contact_pressures()) at
@@ -239,22 +177,12 @@ private:
   template <typename Function>
   void for_each_coupled_dof(unsigned int k, const Function& f) const;
 
-  /**
-   * n . (M a + Q(u) - W) at `node`: the equation-of-motion balance along n, i.e. minus the contact
-   * force on a body-A node and plus that on a body-B node.
-   */
-  double normal_balance(const Node<dim>& node,
-                        const Tensor<1, dim>& normal,
-                        const Vector<double>& lumped_mass,
-                        const Vector<double>& acceleration,
-                        const Vector<double>& net_internal_force) const;
-
   std::vector<ContactPair<dim>> pairs;
   const ContactGeometry<dim>* geometry = nullptr; ///< null: fixed pairs
   ContactFormulation formulation;
   std::vector<bool> active;
   Vector<double> multiplier_values;
   std::vector<double> reference_gaps; ///< empty: zero for every pair
-  double force_per_multiplier = 1.;   ///< see set_force_per_multiplier()
+  double force_factor = 1.;           ///< see set_force_per_multiplier()
 };
 } // namespace dyncontact

@@ -5,6 +5,7 @@
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/postprocess/body_impulses.h>
+#include <dyncontact/postprocess/contact_fields.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
 #include <dyncontact/time_integration/implicit_stepper.h>
@@ -59,7 +60,7 @@ private:
   const Vector<double>& mass;
   const ElasticBodies<dim>& bodies;
   const ContactNewtonSolver<dim>& solver;
-  const ContactConstraints<dim>& contact;
+  const ContactFields<dim> fields;
   const ContactDynamics<dim>& dynamics;
   const ImplicitStepper<dim>& stepper;
   const BodyImpulses<dim>& body_impulses;

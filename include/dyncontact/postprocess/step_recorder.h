@@ -5,6 +5,7 @@
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/models/problem_model.h>
+#include <dyncontact/postprocess/contact_fields.h>
 #include <dyncontact/postprocess/field_output.h>
 #include <dyncontact/postprocess/history.h>
 #include <dyncontact/postprocess/step_measures.h>
@@ -107,14 +108,6 @@ public:
   }
 
 private:
-  /**
-   * The nodal traction (`n_dofs` entries) -p n on body A and p n on body B of every pair,
-   * p = `pressures`.
-   */
-  Vector<double> contact_traction(const std::vector<double>& pressures, unsigned int n_dofs) const;
-  /** Per candidate pair: its slave node, gap, multiplier, `pressures[k]` and active flag. */
-  std::vector<typename FieldOutput<dim>::PressureSample>
-  pressure_samples(const std::vector<double>& pressures, const Vector<double>& displacement) const;
   /** The VTU frame and profiles of the row `frame` if scheduled. */
   void write_fields(unsigned int frame,
                     unsigned int nominal_step,
@@ -125,6 +118,7 @@ private:
   const ProblemModel<dim>& model;
   const NodeIndex<dim>& nodes;
   const ContactConstraints<dim>& contact;
+  const ContactFields<dim> fields;
   const bool surface_contact;
   const std::unique_ptr<FieldOutput<dim>> field_output;
   const OutputParameters output;

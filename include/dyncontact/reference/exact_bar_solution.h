@@ -2,6 +2,7 @@
 
 #include <functional>
 #include <optional>
+#include <queue>
 #include <utility>
 #include <vector>
 
@@ -197,6 +198,20 @@ private:
     internal::StepFunction force;
     internal::StepFunction contact;
   };
+
+  /** Wave arrival times, earliest first. */
+  using ArrivalQueue = std::priority_queue<double, std::vector<double>, std::greater<double>>;
+
+  /**
+   * The time of the next event after `t`: the earliest of the `arrivals` and of the closings of
+   * the open interfaces (gap / closing speed, for `closing_speeds` > 0). If it lies within the end
+   * time, drops the arrivals grouped with it and advances the `gaps` to it (an interface that
+   * closes within the group to gap 0); else returns it and changes nothing.
+   */
+  double advance_to_next_event(double t,
+                               ArrivalQueue& arrivals,
+                               std::vector<double>& gaps,
+                               const std::vector<double>& closing_speeds) const;
 
   /**
    * Build the wave histories from t = 0 to end_time, given the bars at both ends of the row, the

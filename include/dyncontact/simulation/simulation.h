@@ -3,7 +3,6 @@
 #include <dyncontact/base/global.h>
 #include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
-#include <dyncontact/contact/contact_description.h>
 #include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/models/problem_model.h>
@@ -11,7 +10,7 @@
 #include <dyncontact/postprocess/history.h>
 #include <dyncontact/postprocess/step_measures.h>
 #include <dyncontact/postprocess/step_recorder.h>
-#include <dyncontact/simulation/body_discretization.h>
+#include <dyncontact/simulation/contact_problem.h>
 #include <dyncontact/simulation/problem_fingerprint.h>
 #include <dyncontact/simulation/run_progress.h>
 #include <dyncontact/simulation/step_acceptance.h>
@@ -34,16 +33,18 @@
 namespace dyncontact
 {
 /**
- * One run of an elastodynamic contact problem, the same code for every dimension: sets up the
- * mesh and DoFs of the ProblemModel, the lumped mass, the contact layer and the Newton solver, then
- * advances Newmark (classical or modified) step by step, recording the history (history.csv), the
- * reference solution, profiles and VTU fields in Output/directory. Like the tutorial programs it
- * has setup / do_time_step / output phases; the physics lives in the classes it composes.
+ * One run of an elastodynamic contact problem, the same code for every dimension. prepare()
+ * assembles the ProblemModel (ContactProblem: discretization, contact, treatment, solver, stepper),
+ * then run() advances the ImplicitStepper step by step; the StepRecorder writes the history
+ * (history.csv), the reference solution, profiles and VTU fields into Output/directory. Like the
+ * tutorial programs it has setup / do_time_step / output phases; the physics lives in the classes
+ * it composes.
  *
- * Every solved step passes the StepGuards (energy, tensile force, momentum) before it is accepted;
- * a step that fails (Newton, an inverted element, a guard) is taken back and cut in half by the
- * StepController, down to the minimum of Time integration/maximum step cuts. history.csv has one
- * row per accepted (sub-)step, with its size and the number of cuts before it.
+ * Every solved step passes StepAcceptance (the StepGuards: energy, tensile force, momentum; the
+ * contact-event control) before it is accepted; a step that fails (Newton, an inverted element, a
+ * guard) is taken back and cut in half by the StepController, down to the minimum of Time
+ * integration/maximum step cuts. history.csv has one row per accepted (sub-)step, with its size
+ * and the number of cuts before it. A checkpoint holds the state of every owner (serialize_state).
  */
 template <int dim>
 class Simulation
@@ -109,17 +110,20 @@ public:
 
   /** The numeric factorizations of the Newton matrix so far (Newton/method, Newton/direct solver).
    */
-  unsigned int n_factorizations() const { return solver->n_factorizations(); }
+  unsigned int n_factorizations() const { return problem->solver->n_factorizations(); }
 
   /** Lumped nodal masses per DoF. */
-  const Vector<double>& lumped_mass() const { return mass; }
+  const Vector<double>& lumped_mass() const { return problem->mass; }
 
   /** All nodes (body, reference position, DoFs); valid after run(). */
-  const std::vector<Node<dim>>& all_nodes() const { return discretization->nodes->nodes(); }
+  const std::vector<Node<dim>>& all_nodes() const { return problem->discretization.nodes->nodes(); }
 
   /** State at the last completed step; valid after run(). */
-  const Vector<double>& current_displacement() const { return stepper->state().displacement; }
-  const Vector<double>& current_velocity() const { return stepper->state().velocity; }
+  const Vector<double>& current_displacement() const
+  {
+    return problem->stepper->state().displacement;
+  }
+  const Vector<double>& current_velocity() const { return problem->stepper->state().velocity; }
 
   /** The node whose motion is recorded as u_tip_<b>, v_tip_<b>, a_tip_<b>, per body. */
   const std::vector<Node<dim>>& monitor_nodes() const { return recorder->monitor_nodes(); }
@@ -136,24 +140,8 @@ private:
   State current_state() const;
   void restore(const State& state);
 
-  /**
-   * Contact (create_contact, penalties sized) from `description`, its dynamics treatment, the
-   * lumped mass it asks for, the Newton solver, the stepper and the post-processing of the state.
-   */
-  void build_contact_and_solver(const ContactDescription<dim>& description);
-  /** The step recorder and its field output; `slave_surfaces` are drawn as contact surfaces. */
-  void build_recorder(const std::set<types::boundary_id>& slave_surfaces);
-  /** The run's summary lines (sizes, integrator, treatment, the model's, highest mode). */
-  void log_summary() const;
-  /**
-   * Warns when a penalty spring is the one unresolved frequency; throws InputError when the time
-   * step exceeds the stability limit of conditionally stable Newmark (2 beta < gamma), for the
-   * mesh alone or with the penalty springs.
-   */
-  void check_time_step() const;
-  /** The model's initial velocity, the equilibrium acceleration, the pairs and impulses at t = 0.
-   */
-  void set_initial_conditions();
+  /** The step recorder and its field output. */
+  void build_recorder();
   /**
    * The step from `before` to `time` at the integrator's step size (the stepper's solve, the
    * momentum balance, its finish), then the impulses; throws SolverFailure.
@@ -197,23 +185,10 @@ private:
   ConditionalOStream log;
   GeneralizedAlpha integrator;
   const unsigned int n_steps;
-  std::unique_ptr<BodyDiscretization<dim>> discretization;
-  /** The lumped mass per DoF the run uses (zero at massless contact nodes). */
-  Vector<double> mass;
   /** Whether prepare() has done its work. */
   bool prepared = false;
-  std::unique_ptr<ContactGeometry<dim>> surface_contact; ///< null: fixed-normal pairs only
-  std::unique_ptr<ContactConstraints<dim>> contact;
-  std::unique_ptr<ContactDynamics<dim>> contact_dynamics; ///< Contact/dynamics
-  std::unique_ptr<ContactNewtonSolver<dim>> solver;
-  /** The step and its state (u, v, a, Q, W at the current time). */
-  std::unique_ptr<ImplicitStepper<dim>> stepper;
-  double penalty_factor = 0.;    ///< the factor in force (Contact/penalty factor, or the auto one)
-  bool penalty_lowered  = false; ///< Contact/penalty factor = auto lowered the springs
-  double time           = 0.;
-  /** Per body: the forces that change its momentum, their impulses, the external work. */
-  std::unique_ptr<BodyImpulses<dim>> body_impulses;
-  std::unique_ptr<StepMeasures<dim>> step_measures;
+  std::unique_ptr<ContactProblem<dim>> problem; ///< built by prepare()
+  double time = 0.;
   std::unique_ptr<StepAcceptance<dim>> acceptance;
   std::unique_ptr<StepRecorder<dim>> recorder;
   TimerOutput timer;

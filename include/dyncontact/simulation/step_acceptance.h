@@ -5,6 +5,7 @@
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/postprocess/body_impulses.h>
+#include <dyncontact/postprocess/contact_fields.h>
 #include <dyncontact/postprocess/step_measures.h>
 #include <dyncontact/simulation/step_guards.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
@@ -20,7 +21,7 @@ namespace dyncontact
  * Whether a solved step is accepted: the StepGuards on its figures, and with massless contact
  * nodes (Contact/dynamics = mass-redistribution) the contact-event control, which cuts a step
  * whose closing or release does more work than Guards/contact event tolerance times the energy
- * (ContactConstraints::event_work(); doc/schemes.md, "Mass redistribution with resolved contact
+ * (ContactFields::event_work(); doc/schemes.md, "Mass redistribution with resolved contact
  * events"). The energy guard reads E_0 plus the algorithmic-energy change of every accepted step,
  * each evaluated with that step's size h: the weight (beta - gamma/2) h^2 of a.Ma depends on h, so
  * E with the new h minus E with the old one would show a gain after every cut when
@@ -82,6 +83,7 @@ private:
   const GuardParameters parameters;
   const GeneralizedAlpha& integrator;
   const ContactConstraints<dim>& contact;
+  const ContactFields<dim> fields;
   const ContactDynamics<dim>& dynamics;
   const BodyImpulses<dim>& impulses;
   StepGuards guards;

@@ -1,0 +1,169 @@
+#include <dyncontact/postprocess/contact_fields.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace dyncontact
+{
+namespace
+{
+/**
+ * n . (M a + Q(u) - W) at `node`: the equation-of-motion balance along n, i.e. minus the contact
+ * force on a body-A node and plus that on a body-B node.
+ */
+template <int dim>
+double normal_balance(const Node<dim>& node,
+                      const Tensor<1, dim>& normal,
+                      const Vector<double>& lumped_mass,
+                      const Vector<double>& acceleration,
+                      const Vector<double>& net_internal_force)
+{
+  double balance = 0.;
+  for (unsigned int d = 0; d < dim; ++d)
+    balance += normal[d] * (lumped_mass[node.dofs[d]] * acceleration[node.dofs[d]] +
+                            net_internal_force[node.dofs[d]]);
+  return balance;
+}
+} // namespace
+
+template <int dim>
+ContactFields<dim>::ContactFields(const ContactConstraints<dim>& contact) : contact(contact)
+{
+}
+
+template <int dim>
+double ContactFields<dim>::recovered_contact_force(const Vector<double>& lumped_mass,
+                                                   const Vector<double>& acceleration,
+                                                   const Vector<double>& net_internal_force) const
+{
+  const auto& pairs = contact.candidate_pairs();
+  double force      = 0.;
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (contact.is_active(k))
+      force -= normal_balance(
+          pairs[k].slave, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
+  return force;
+}
+
+template <int dim>
+typename ContactFields<dim>::SideForces
+ContactFields<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
+                                          const Vector<double>& acceleration,
+                                          const Vector<double>& net_internal_force,
+                                          const Tensor<1, dim>& direction) const
+{
+  // Every node of an active pair between bodies counts once, on its side (a slave node on A, a
+  // master node on B), however many pairs hold it (node-to-segment).
+  const auto& pairs = contact.candidate_pairs();
+  SideForces forces{0., 0.};
+  std::vector<bool> counted(lumped_mass.size(), false);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (contact.is_active(k) && !pairs[k].against_wall())
+      pairs[k].for_each_node(
+          [&](const Node<dim>& node, const double coefficient)
+          {
+            if (counted[node.dofs[0]])
+              return;
+            counted[node.dofs[0]] = true;
+            const double balance =
+                normal_balance(node, direction, lumped_mass, acceleration, net_internal_force);
+            (coefficient < 0. ? forces.on_a : forces.on_b) += coefficient < 0. ? -balance : balance;
+          });
+  return forces;
+}
+
+template <int dim>
+double ContactFields<dim>::total_pair_force() const
+{
+  double total = 0.;
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    total += contact.pair_force(k);
+  return total;
+}
+
+template <int dim>
+double ContactFields<dim>::event_work(const Vector<double>& old_displacement,
+                                      const Vector<double>& new_displacement,
+                                      const typename ContactConstraints<dim>::State& old) const
+{
+  double work = 0.;
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    if (contact.is_active(k) && !old.active[k])
+      work += 0.5 * contact.pair_force(k) * std::max(0., contact.gap(k, old_displacement));
+    else if (!contact.is_active(k) && old.active[k])
+      work += 0.5 * contact.force_per_multiplier() * old.multipliers[k] *
+              std::max(0., contact.gap(k, new_displacement));
+  return work;
+}
+
+template <int dim>
+double ContactFields<dim>::max_penetration(const Vector<double>& displacement) const
+{
+  double penetration = 0.;
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    penetration = std::max(penetration, -contact.gap(k, displacement));
+  return penetration;
+}
+
+template <int dim>
+double ContactFields<dim>::max_active_normal_jump(const Vector<double>& field) const
+{
+  double jump = 0.;
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    if (contact.is_active(k))
+      jump = std::max(jump, std::abs(contact.candidate_pairs()[k].normal_jump(field)));
+  return jump;
+}
+
+template <int dim>
+double ContactFields<dim>::contact_radius(const Vector<double>& displacement) const
+{
+  double radius = 0.;
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    if (contact.is_active(k))
+      radius = std::max(
+          radius,
+          distance_from_axis(current_position(contact.candidate_pairs()[k].slave, displacement)));
+  return radius;
+}
+
+template <int dim>
+Vector<double> ContactFields<dim>::traction(const std::vector<double>& pressures,
+                                            const unsigned int n_dofs) const
+{
+  Vector<double> traction(n_dofs);
+  // The slave node's pressure along -n on body A; on body B distributed to the master nodes by
+  // their weights (node-to-node: the facing node's own pressure).
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    contact.candidate_pairs()[k].for_each_node(
+        [&](const Node<dim>& node, const double coefficient)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            traction[node.dofs[d]] +=
+                coefficient * pressures[k] * contact.candidate_pairs()[k].normal[d];
+        });
+  return traction;
+}
+
+template <int dim>
+std::vector<typename FieldOutput<dim>::PressureSample>
+ContactFields<dim>::pressure_samples(const std::vector<double>& pressures,
+                                     const Vector<double>& displacement) const
+{
+  std::vector<typename FieldOutput<dim>::PressureSample> samples;
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+  {
+    const Node<dim>& slave = contact.candidate_pairs()[k].slave;
+    samples.push_back({slave,
+                       current_position(slave, displacement),
+                       contact.gap(k, displacement),
+                       contact.pair_force(k),
+                       pressures[k],
+                       contact.is_active(k)});
+  }
+  return samples;
+}
+
+template class ContactFields<1>;
+template class ContactFields<2>;
+} // namespace dyncontact
