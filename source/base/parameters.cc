@@ -845,32 +845,7 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
   prm.declare_entry("dynamics",
                     contact_dynamics_names().name(default_contact_dynamics),
                     Patterns::Selection(contact_dynamics_names().selection()),
-                    "Treatment of the contact nodes' velocities and accelerations (doc/schemes.md "
-                    "compares them). none: "
-                    "classical Newmark, contact constrains displacements only. "
-                    "taylor-papadopoulos: the paper's modified Newmark (Taylor & Papadopoulos "
-                    "1993, eqs. 19-24): after each step the normal velocity and acceleration of "
-                    "every active pair are made continuous, conserving momentum; needs Lagrange "
-                    "multipliers. mass-redistribution (the default): the nodes that can come "
-                    "into contact carry no mass, each cell's mass going to its other nodes "
-                    "(Khenous, Laborde & Renard 2008); the contact force is then the adjacent "
-                    "elements' elastic force, without the oscillation of massive contact nodes, "
-                    "and the steps where pairs close or open are cut until their energy error is "
-                    "within Guards/contact event tolerance; needs a node off the contact surfaces "
-                    "in every cell. contact-stabilized: "
-                    "the contact-stabilized Newmark of Deuflhard, Krause & Ertel (2008): the "
-                    "predictor projected onto the admissible set, the old contact force left out "
-                    "of the explicit part; energy dissipative at contact. persistency: the "
-                    "gap-rate (persistency) condition of Laursen & Chawla (1997) on the pairs "
-                    "predicted to close, one contact force per step; conserves energy through "
-                    "impact and release, contact may act across a gap of one step's approach. "
-                    "velocity-update: impenetrability with one contact force per step, then a "
-                    "velocity jump that zeroes every active pair's relative normal velocity "
-                    "(Laursen & Love 2002); dissipates at impact only. contact-stabilized, "
-                    "persistency and velocity-update need Time integration/integrator = newmark "
-                    "with beta = 1/4, gamma = 1/2; "
-                    "taylor-papadopoulos, persistency and velocity-update need Lagrange "
-                    "multipliers.");
+                    contact_dynamics_documentation(default_contact_dynamics));
   prm.declare_entry("formulation",
                     "lagrange multiplier",
                     Patterns::Selection(contact_formulation_names().selection()),
@@ -1389,11 +1364,9 @@ void ParameterReader::resolve_and_check()
                          dynamics_names.name(meant) + " instead of scheme = " + old_name + ".");
   }
   const std::string dynamics = "Contact/dynamics = " + dynamics_names.name(p.contact.dynamics);
-  const bool one_contact_force_per_step =
-      p.contact.dynamics == ContactDynamicsKind::contact_stabilized ||
-      p.contact.dynamics == ContactDynamicsKind::persistency ||
-      p.contact.dynamics == ContactDynamicsKind::velocity_update;
-  p.time.resolve_newmark_coefficients(one_contact_force_per_step);
+  const ContactDynamicsTraits& treatment = contact_dynamics_traits(p.contact.dynamics);
+  const bool trapezoidal_rule_required   = !treatment.trapezoidal_rule_reason.empty();
+  p.time.resolve_newmark_coefficients(trapezoidal_rule_required);
   if (p.time.integrator == IntegratorFamily::newmark)
   {
     // The record (parameters.prm) names the coefficients the run used, so it reruns alike.
@@ -1402,30 +1375,16 @@ void ParameterReader::resolve_and_check()
     prm.set("gamma", format_exact(p.time.gamma));
     prm.leave_subsection();
   }
-  if (one_contact_force_per_step && (p.time.integrator != IntegratorFamily::newmark ||
-                                     p.time.beta != 0.25 || p.time.gamma != 0.5))
+  if (trapezoidal_rule_required && (p.time.integrator != IntegratorFamily::newmark ||
+                                    p.time.beta != 0.25 || p.time.gamma != 0.5))
     throw InputError(dynamics + " needs the trapezoidal rule, Time integration/integrator = " +
                      "newmark with beta = 0.25 and gamma = 0.5 (given " +
                      integrator_family_names().name(p.time.integrator) + ", beta = " +
                      format_number(p.time.beta) + ", gamma = " + format_number(p.time.gamma) +
-                     "): its one contact force per step and its energy argument are built on it; "
-                     "with the paper's beta = 0.001 contact-stabilized's projected contact nodes "
-                     "gained 3300 times the initial energy on 6.1.");
-  if (p.contact.formulation == ContactFormulation::penalty &&
-      (p.contact.dynamics == ContactDynamicsKind::taylor_papadopoulos ||
-       p.contact.dynamics == ContactDynamicsKind::velocity_update))
-    throw InputError(
-        "Contact/formulation = penalty cannot be combined with " + dynamics +
-        ": its rate correction assumes exactly closed pairs; a penalized pair stays penetrated "
-        "and the correction glues it (the bars of case 6.2 never separate with "
-        "taylor-papadopoulos). Use Contact/dynamics = none, mass-redistribution or "
-        "contact-stabilized with a penalty, or Lagrange multipliers.");
-  if (p.contact.formulation == ContactFormulation::penalty &&
-      p.contact.dynamics == ContactDynamicsKind::persistency)
-    throw InputError("Contact/formulation = penalty cannot be combined with " + dynamics +
-                     ": a penalty on the gap rate dissipates, and Armero & Petocz's "
-                     "energy-conserving penalty force is not implemented. Use Lagrange "
-                     "multipliers.");
+                     "): " + treatment.trapezoidal_rule_reason);
+  if (p.contact.formulation == ContactFormulation::penalty && !treatment.penalty_refusal.empty())
+    throw InputError("Contact/formulation = penalty cannot be combined with " + dynamics + ": " +
+                     treatment.penalty_refusal);
 }
 
 void ParameterReader::write_records(const std::string& directory) const

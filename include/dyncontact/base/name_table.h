@@ -54,6 +54,9 @@ public:
     throw std::logic_error("NameTable: an enumerator without a name");
   }
 
+  /** Every (name, value), in the table's order. */
+  const std::vector<std::pair<std::string, Enum>>& pairs() const { return entries; }
+
 private:
   std::vector<std::pair<std::string, Enum>> entries;
 };
