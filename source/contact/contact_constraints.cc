@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/contact_constraints.h>
 
 #include <algorithm>
@@ -235,6 +236,5 @@ ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) c
   return geometry->contact_pressures(displacement, forces);
 }
 
-template class ContactConstraints<1>;
-template class ContactConstraints<2>;
+DYNCONTACT_INSTANTIATE_CLASS(ContactConstraints)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/contact/contact_geometry_set.h>
 #include <dyncontact/contact/node_to_segment_contact.h>
@@ -142,16 +143,13 @@ Contact<dim> create_contact(const ContactDescription<dim>& description,
   return contact;
 }
 
-template Contact<1> create_contact(const ContactDescription<1>&,
-                                   const DoFHandler<1>&,
-                                   const Kinematics<1>&,
-                                   const NodeIndex<1>&,
-                                   const ContactParameters&,
-                                   const std::optional<PenaltySizingInput>&);
-template Contact<2> create_contact(const ContactDescription<2>&,
-                                   const DoFHandler<2>&,
-                                   const Kinematics<2>&,
-                                   const NodeIndex<2>&,
-                                   const ContactParameters&,
-                                   const std::optional<PenaltySizingInput>&);
+#define DYNCONTACT_INSTANTIATE(dim)                                                                \
+  template Contact<dim> create_contact(const ContactDescription<dim>&,                             \
+                                       const DoFHandler<dim>&,                                     \
+                                       const Kinematics<dim>&,                                     \
+                                       const NodeIndex<dim>&,                                      \
+                                       const ContactParameters&,                                   \
+                                       const std::optional<PenaltySizingInput>&);
+DYNCONTACT_FOR_EACH_DIMENSION(DYNCONTACT_INSTANTIATE)
+#undef DYNCONTACT_INSTANTIATE
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/contact_geometry_set.h>
 
 #include <algorithm>
@@ -80,7 +81,5 @@ ContactGeometrySet<dim>::contact_pressures(const Vector<double>& displacement,
   return pressures;
 }
 
-template class ContactGeometrySet<1>;
-template class ContactGeometrySet<2>;
-template class ContactGeometrySet<3>;
+DYNCONTACT_INSTANTIATE_CLASS(ContactGeometrySet)
 } // namespace dyncontact

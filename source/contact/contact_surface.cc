@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/contact_surface.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -187,7 +188,5 @@ ContactSurface<dim>::consistent_pressures(const Vector<double>& displacement,
   return pressures;
 }
 
-template class ContactSurface<1>;
-template class ContactSurface<2>;
-template class ContactSurface<3>;
+DYNCONTACT_INSTANTIATE_CLASS(ContactSurface)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/node_to_node_contact.h>
 
 #include <algorithm>
@@ -197,7 +198,5 @@ NodeToNodeContact<dim>::coupled_dofs(const unsigned int k) const
   return candidate_pairs[k].dofs();
 }
 
-template class NodeToNodeContact<1>;
-template class NodeToNodeContact<2>;
-template class NodeToNodeContact<3>;
+DYNCONTACT_INSTANTIATE_CLASS(NodeToNodeContact)
 } // namespace dyncontact

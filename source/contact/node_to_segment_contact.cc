@@ -267,5 +267,6 @@ NodeToSegmentContact<dim>::contact_pressures(const Vector<double>& displacement,
   return slave_surface.consistent_pressures(displacement, slave_node_of_pair, multipliers);
 }
 
+// 2D only, the exception to base/dimensions.h: its face patch is a 3-node line.
 template class NodeToSegmentContact<2>;
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/penalty_sizing.h>
 #include <dyncontact/time_integration/mode_resolution.h>
 
@@ -38,10 +39,10 @@ double size_automatic_penalty(ContactConstraints<dim>& contact, const PenaltySiz
   return scale;
 }
 
-template double
-penalty_spring_omega_dt(const ContactConstraints<1>&, const Vector<double>&, double);
-template double
-penalty_spring_omega_dt(const ContactConstraints<2>&, const Vector<double>&, double);
-template double size_automatic_penalty(ContactConstraints<1>&, const PenaltySizingInput&);
-template double size_automatic_penalty(ContactConstraints<2>&, const PenaltySizingInput&);
+#define DYNCONTACT_INSTANTIATE(dim)                                                                \
+  template double penalty_spring_omega_dt(                                                         \
+      const ContactConstraints<dim>&, const Vector<double>&, double);                              \
+  template double size_automatic_penalty(ContactConstraints<dim>&, const PenaltySizingInput&);
+DYNCONTACT_FOR_EACH_DIMENSION(DYNCONTACT_INSTANTIATE)
+#undef DYNCONTACT_INSTANTIATE
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/rigid_plane_contact.h>
 
 #include <sstream>
@@ -56,7 +57,5 @@ RigidPlaneContact<dim>::contact_pressures(const Vector<double>& displacement,
   return surface.consistent_pressures(displacement, surface_node_of_pair, multipliers);
 }
 
-template class RigidPlaneContact<1>;
-template class RigidPlaneContact<2>;
-template class RigidPlaneContact<3>;
+DYNCONTACT_INSTANTIATE_CLASS(RigidPlaneContact)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/contact_dynamics/contact_stabilized_newmark.h>
 #include <dyncontact/contact_dynamics/mass_redistribution.h>
@@ -121,6 +122,8 @@ std::unique_ptr<ContactDynamics<dim>> create_contact_dynamics(const ContactDynam
   throw std::logic_error("create_contact_dynamics: a ContactDynamicsKind without a treatment");
 }
 
-template std::unique_ptr<ContactDynamics<1>> create_contact_dynamics<1>(ContactDynamicsKind);
-template std::unique_ptr<ContactDynamics<2>> create_contact_dynamics<2>(ContactDynamicsKind);
+#define DYNCONTACT_INSTANTIATE(dim)                                                                \
+  template std::unique_ptr<ContactDynamics<dim>> create_contact_dynamics<dim>(ContactDynamicsKind);
+DYNCONTACT_FOR_EACH_DIMENSION(DYNCONTACT_INSTANTIATE)
+#undef DYNCONTACT_INSTANTIATE
 } // namespace dyncontact

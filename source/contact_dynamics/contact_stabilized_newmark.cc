@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact_dynamics/contact_stabilized_newmark.h>
 #include <dyncontact/contact_dynamics/pair_mass_system.h>
 
@@ -82,6 +83,5 @@ ContactStabilizedNewmark<dim>::predictor_shift(const RateMap& rates,
   return projection_shift(contact, lumped_mass, start.is_fixed, position);
 }
 
-template class ContactStabilizedNewmark<1>;
-template class ContactStabilizedNewmark<2>;
+DYNCONTACT_INSTANTIATE_CLASS(ContactStabilizedNewmark)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact_dynamics/implicit_contact_impulse.h>
 
 namespace dyncontact
@@ -36,6 +37,5 @@ ImplicitContactImpulse<dim>::predictor_shift(const RateMap& /*rates*/,
   return {};
 }
 
-template class ImplicitContactImpulse<1>;
-template class ImplicitContactImpulse<2>;
+DYNCONTACT_INSTANTIATE_CLASS(ImplicitContactImpulse)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact_dynamics/mass_redistribution.h>
 
 namespace dyncontact
@@ -18,6 +19,5 @@ void MassRedistribution<dim>::correct_rates(const RateMap& rates,
     }
 }
 
-template class MassRedistribution<1>;
-template class MassRedistribution<2>;
+DYNCONTACT_INSTANTIATE_CLASS(MassRedistribution)
 } // namespace dyncontact

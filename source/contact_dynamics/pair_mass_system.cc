@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact_dynamics/pair_mass_system.h>
 
 #include <map>
@@ -54,6 +55,5 @@ Tensor<1, dim> PairMassSystem<dim>::nodal_change(const unsigned int i,
   return force;
 }
 
-template class PairMassSystem<1>;
-template class PairMassSystem<2>;
+DYNCONTACT_INSTANTIATE_CLASS(PairMassSystem)
 } // namespace dyncontact

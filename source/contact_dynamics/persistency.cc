@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact_dynamics/persistency.h>
 
 namespace dyncontact
@@ -14,6 +15,5 @@ std::vector<double> Persistency<dim>::reference_gaps(const ContactConstraints<di
   return reference;
 }
 
-template class Persistency<1>;
-template class Persistency<2>;
+DYNCONTACT_INSTANTIATE_CLASS(Persistency)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact_dynamics/pair_mass_system.h>
 #include <dyncontact/contact_dynamics/taylor_papadopoulos.h>
 
@@ -61,6 +62,5 @@ void TaylorPapadopoulos<dim>::correct_rates(const RateMap& rates,
   }
 }
 
-template class TaylorPapadopoulos<1>;
-template class TaylorPapadopoulos<2>;
+DYNCONTACT_INSTANTIATE_CLASS(TaylorPapadopoulos)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact_dynamics/pair_mass_system.h>
 #include <dyncontact/contact_dynamics/velocity_update.h>
 
@@ -35,6 +36,5 @@ void VelocityUpdate<dim>::correct_rates(const RateMap& /*rates*/,
   }
 }
 
-template class VelocityUpdate<1>;
-template class VelocityUpdate<2>;
+DYNCONTACT_INSTANTIATE_CLASS(VelocityUpdate)
 } // namespace dyncontact

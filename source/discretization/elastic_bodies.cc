@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 
@@ -474,7 +475,5 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
     throw SolverFailure(failure.empty() ? "a material point failed on another MPI rank." : failure);
 }
 
-template class ElasticBodies<1>;
-template class ElasticBodies<2>;
-template class ElasticBodies<3>;
+DYNCONTACT_INSTANTIATE_CLASS(ElasticBodies)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/discretization/node_index.h>
 
 #include <deal.II/fe/fe.h>
@@ -71,7 +72,5 @@ const Node<dim>& NodeIndex<dim>::closest_node(const types::material_id body,
   return *closest;
 }
 
-template class NodeIndex<1>;
-template class NodeIndex<2>;
-template class NodeIndex<3>;
+DYNCONTACT_INSTANTIATE_CLASS(NodeIndex)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/discretization/surface_tractions.h>
 
@@ -57,6 +58,5 @@ Vector<double> SurfaceTractions<dim>::force(const double time) const
   return force;
 }
 
-template class SurfaceTractions<1>;
-template class SurfaceTractions<2>;
+DYNCONTACT_INSTANTIATE_CLASS(SurfaceTractions)
 } // namespace dyncontact

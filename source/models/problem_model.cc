@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/models/problem_model.h>
 
 namespace dyncontact
@@ -30,7 +31,5 @@ void ProblemModel<dim>::summarize_run(const std::string&,
 {
 }
 
-template class ProblemModel<1>;
-template class ProblemModel<2>;
-template class ProblemModel<3>;
+DYNCONTACT_INSTANTIATE_CLASS(ProblemModel)
 } // namespace dyncontact

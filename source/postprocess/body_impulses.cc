@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/postprocess/body_impulses.h>
 
 namespace dyncontact
@@ -161,6 +162,5 @@ std::vector<double> BodyImpulses<dim>::momenta(const Vector<double>& velocity) c
   return momenta;
 }
 
-template class BodyImpulses<1>;
-template class BodyImpulses<2>;
+DYNCONTACT_INSTANTIATE_CLASS(BodyImpulses)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/postprocess/contact_fields.h>
 
 #include <algorithm>
@@ -164,6 +165,5 @@ ContactFields<dim>::pressure_samples(const std::vector<double>& pressures,
   return samples;
 }
 
-template class ContactFields<1>;
-template class ContactFields<2>;
+DYNCONTACT_INSTANTIATE_CLASS(ContactFields)
 } // namespace dyncontact

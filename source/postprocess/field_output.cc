@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/postprocess/field_output.h>
 
 #include <deal.II/base/mpi.h>
@@ -313,6 +314,5 @@ void FieldOutput<dim>::write_cell_outlines(const std::vector<Node<dim>>& nodes) 
   }
 }
 
-template class FieldOutput<1>;
-template class FieldOutput<2>;
+DYNCONTACT_INSTANTIATE_CLASS(FieldOutput)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/postprocess/step_measures.h>
 
 #include <cmath>
@@ -57,6 +58,5 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
   return measures;
 }
 
-template class StepMeasures<1>;
-template class StepMeasures<2>;
+DYNCONTACT_INSTANTIATE_CLASS(StepMeasures)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/postprocess/step_recorder.h>
 
 #include <deal.II/base/mpi.h>
@@ -218,6 +219,5 @@ History StepRecorder<dim>::nominal_history() const
   return nominal;
 }
 
-template class StepRecorder<1>;
-template class StepRecorder<2>;
+DYNCONTACT_INSTANTIATE_CLASS(StepRecorder)
 } // namespace dyncontact

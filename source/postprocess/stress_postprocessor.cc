@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/postprocess/stress_postprocessor.h>
 
 #include <deal.II/base/symmetric_tensor.h>
@@ -106,6 +107,5 @@ void StressPostprocessor<dim>::evaluate(const Material& material,
   out[2 * n] = std::sqrt(1.5 * scalar_product(s, s));
 }
 
-template class StressPostprocessor<1>;
-template class StressPostprocessor<2>;
+DYNCONTACT_INSTANTIATE_CLASS(StressPostprocessor)
 } // namespace dyncontact

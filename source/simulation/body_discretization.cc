@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/simulation/body_discretization.h>
 #include <dyncontact/simulation/problem_fingerprint.h>
 
@@ -38,6 +39,5 @@ std::string BodyDiscretization<dim>::node_checksum() const
   return checksum(coordinates);
 }
 
-template class BodyDiscretization<1>;
-template class BodyDiscretization<2>;
+DYNCONTACT_INSTANTIATE_CLASS(BodyDiscretization)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/contact/penalty_sizing.h>
 #include <dyncontact/simulation/contact_problem.h>
@@ -137,6 +138,5 @@ std::string ContactProblem<dim>::description() const
          discretization.node_checksum();
 }
 
-template class ContactProblem<1>;
-template class ContactProblem<2>;
+DYNCONTACT_INSTANTIATE_CLASS(ContactProblem)
 } // namespace dyncontact

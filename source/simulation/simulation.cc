@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/simulation/checkpoint_file.h>
 #include <dyncontact/simulation/interruption.h>
 #include <dyncontact/simulation/simulation.h>
@@ -340,6 +341,5 @@ void Simulation<dim>::run(const std::string& resume_directory)
   finish();
 }
 
-template class Simulation<1>;
-template class Simulation<2>;
+DYNCONTACT_INSTANTIATE_CLASS(Simulation)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/simulation/step_acceptance.h>
 
 #include <cmath>
@@ -96,6 +97,5 @@ StepAcceptance<dim>::event_failure(const Vector<double>& displacement_before,
          " (a pair closed or opened within the step)";
 }
 
-template class StepAcceptance<1>;
-template class StepAcceptance<2>;
+DYNCONTACT_INSTANTIATE_CLASS(StepAcceptance)
 } // namespace dyncontact

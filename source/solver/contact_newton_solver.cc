@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 
 #include <cmath>
@@ -306,6 +307,5 @@ void ContactNewtonSolver<dim>::move_along_update(Iteration& iteration, const dou
       iteration.displacement, gap_tolerance, parameters.residual_tolerance * reference_force);
 }
 
-template class ContactNewtonSolver<1>;
-template class ContactNewtonSolver<2>;
+DYNCONTACT_INSTANTIATE_CLASS(ContactNewtonSolver)
 } // namespace dyncontact

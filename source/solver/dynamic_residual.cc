@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/solver/dynamic_residual.h>
 
 #include <algorithm>
@@ -117,6 +118,5 @@ DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double
   return figures;
 }
 
-template class DynamicResidual<1>;
-template class DynamicResidual<2>;
+DYNCONTACT_INSTANTIATE_CLASS(DynamicResidual)
 } // namespace dyncontact

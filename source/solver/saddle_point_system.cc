@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/solver/saddle_point_system.h>
 
@@ -282,6 +283,5 @@ Vector<double> SaddlePointSystem<dim>::solve_with_factors(const Vector<double>& 
   return solution;
 }
 
-template class SaddlePointSystem<1>;
-template class SaddlePointSystem<2>;
+DYNCONTACT_INSTANTIATE_CLASS(SaddlePointSystem)
 } // namespace dyncontact

@@ -1,3 +1,4 @@
+#include <dyncontact/base/dimensions.h>
 #include <dyncontact/time_integration/implicit_stepper.h>
 
 namespace dyncontact
@@ -109,6 +110,5 @@ void ImplicitStepper<dim>::solved_balance(Vector<double>& acceleration,
     net_force -= current.external_force;
 }
 
-template class ImplicitStepper<1>;
-template class ImplicitStepper<2>;
+DYNCONTACT_INSTANTIATE_CLASS(ImplicitStepper)
 } // namespace dyncontact
