@@ -2,11 +2,11 @@
 // problem's dimension, and turns every failure into one clear message and a non-zero exit code.
 #include <dyncontact/base/command_line.h>
 #include <dyncontact/base/output_directory.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/base/version.h>
 #include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/bar_model.h>
 #include <dyncontact/simulation/interruption.h>
+#include <dyncontact/simulation/parameter_reader.h>
 #include <dyncontact/simulation/run_record.h>
 #include <dyncontact/simulation/setup_check.h>
 #include <dyncontact/simulation/simulation.h>

@@ -20,6 +20,11 @@ AxisymmetricMeshModel::AxisymmetricMeshModel(const MeshParameters& mesh,
     : mesh(mesh), bodies(bodies), declared_pairs(pairs), n_cells(0), shortest_edge(0.),
       largest_coordinate(0.), closest_boundary_vertices(0.)
 {
+  for (const BodyParameters& body : bodies.bodies)
+  {
+    initial_velocities.push_back(body.initial_velocity.create<2>(2));
+    tractions.push_back(body.surface_traction.create<2>(2));
+  }
 }
 
 void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation)
@@ -123,7 +128,7 @@ Tensor<1, 2> AxisymmetricMeshModel::initial_velocity(const types::material_id bo
 {
   Tensor<1, 2> velocity;
   for (unsigned int d = 0; d < 2; ++d)
-    velocity[d] = bodies.bodies[body].initial_velocity->value(X, d);
+    velocity[d] = initial_velocities[body]->value(X, d);
   if (!std::isfinite(velocity[0]) || !std::isfinite(velocity[1]))
   {
     std::ostringstream message;
@@ -169,13 +174,14 @@ ContactDescription<2> AxisymmetricMeshModel::contact_description(const NodeIndex
                                            touching_tolerance(),
                                            source});
     else
-      description.plane_pairs.push_back({pair.slave_boundary,
-                                         pair.rigid_plane->first,
-                                         pair.rigid_plane->second,
-                                         stiffest,
-                                         shortest_edge,
-                                         touching_tolerance(),
-                                         source});
+      description.plane_pairs.push_back(
+          {pair.slave_boundary,
+           Point<2>(pair.rigid_plane->point[0], pair.rigid_plane->point[1]),
+           Tensor<1, 2>({pair.rigid_plane->normal[0], pair.rigid_plane->normal[1]}),
+           stiffest,
+           shortest_edge,
+           touching_tolerance(),
+           source});
   }
   return description;
 }
@@ -213,10 +219,11 @@ std::vector<Node<2>> AxisymmetricMeshModel::monitor_nodes(const NodeIndex<2>& no
   std::vector<Node<2>> monitors;
   for (unsigned int body = 0; body < n_bodies(); ++body)
   {
-    const std::optional<Point<2>>& given = bodies.bodies[body].monitor_point;
-    const Point<2> point                 = given.value_or(Point<2>(0., body_centroid_z[body]));
+    const std::vector<double>& given = bodies.bodies[body].monitor_point;
+    const Point<2> point =
+        given.empty() ? Point<2>(0., body_centroid_z[body]) : Point<2>(given[0], given[1]);
     monitors.push_back(nodes.closest_node(body, point));
-    if (!given)
+    if (given.empty())
       continue;
     // Inside a cell of the body a point is within that cell's diameter of one of its nodes.
     const Point<2>& node  = monitors.back().position;
@@ -237,10 +244,10 @@ std::vector<Node<2>> AxisymmetricMeshModel::monitor_nodes(const NodeIndex<2>& no
 
 std::vector<SurfaceTraction<2>> AxisymmetricMeshModel::surface_tractions() const
 {
-  std::vector<SurfaceTraction<2>> tractions;
+  std::vector<SurfaceTraction<2>> surface_loads;
   for (const BoundaryCurve& curve : geometry.curves)
-    tractions.push_back({curve.id, bodies.bodies[curve.body].surface_traction});
-  return tractions;
+    surface_loads.push_back({curve.id, tractions[curve.body]});
+  return surface_loads;
 }
 
 Tensor<1, 2> AxisymmetricMeshModel::impact_direction() const
@@ -287,8 +294,8 @@ std::optional<AxisymmetricMeshModel::HeadOnImpact> AxisymmetricMeshModel::head_o
   std::optional<ImpactSide> first   = impact_side(pair.slave_boundary), second;
   if (pair.master_boundary)
     second = impact_side(*pair.master_boundary);
-  else if (std::abs(std::abs(pair.rigid_plane->second[1]) - 1.) <= 1e-12)
-    second = ImpactSide{std::nullopt, pair.rigid_plane->first[1], std::nullopt, false};
+  else if (std::abs(std::abs(pair.rigid_plane->normal[1]) - 1.) <= 1e-12)
+    second = ImpactSide{std::nullopt, pair.rigid_plane->point[1], std::nullopt, false};
   if (!first || !second)
     return std::nullopt;
   if (!first->sphere)
@@ -299,13 +306,12 @@ std::optional<AxisymmetricMeshModel::HeadOnImpact> AxisymmetricMeshModel::head_o
   // The other side's position and velocity along the axis: its centre, or its flat surface.
   const double other_z = second->sphere ? second->sphere->centre[1] : second->surface_z;
   const double velocity_of_other =
-      second->body ? bodies.bodies[*second->body].initial_velocity->value(
+      second->body ? initial_velocities[*second->body]->value(
                          second->sphere ? second->sphere->centre : Point<2>(0., other_z), 1)
                    : 0.;
   const double direction = other_z > centre[1] ? 1. : -1.;
   const double approach_speed =
-      direction *
-      (bodies.bodies[*first->body].initial_velocity->value(centre, 1) - velocity_of_other);
+      direction * (initial_velocities[*first->body]->value(centre, 1) - velocity_of_other);
   // Bodies touching at t = 0 to the tolerance have gap zero: the impact starts at once.
   double gap = std::abs(other_z - centre[1]) - first->sphere->radius -
                (second->sphere ? second->sphere->radius : 0.);

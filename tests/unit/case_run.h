@@ -1,8 +1,8 @@
 #pragma once
 // Test support: runs shipped prm files in-process (bars paired with their exact solution).
 
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/reference/exact_bar_solution.h>
+#include <dyncontact/simulation/parameter_reader.h>
 #include <dyncontact/simulation/simulation.h>
 
 #include <map>

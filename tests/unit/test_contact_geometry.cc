@@ -1,9 +1,9 @@
 // Unit test of the node-to-node contact geometry on the paper's mirrored two-sphere mesh, apart
 // from any time stepping: the pair normal n = (n_A - n_B) / |n_A - n_B| of every pair, off-axis
 // ones included, against the exact normals of the configuration.
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>

@@ -4,7 +4,7 @@
 // events resolved to Guards/contact event tolerance = 1e-4. The shipped prm files name the paper's
 // Newmark, so the runs name the defaults back: they are what a prm file without those entries gets
 // (an empty beta or gamma is the default).
-#include <dyncontact/base/parameters.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <algorithm>
 #include <filesystem>

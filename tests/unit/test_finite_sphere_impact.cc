@@ -1,8 +1,8 @@
 // Unit tests of FiniteSphereImpact: the finite-sphere law against its formula and its Hertz limit,
 // the paper's sphere case against the deviations from Hertz quoted in issue 12, the impulse, and
 // the history against an independent Runge-Kutta solution of the impact ODE.
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/reference/finite_sphere_impact.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <cmath>
 #include <gtest/gtest.h>
@@ -114,8 +114,8 @@ TEST(FiniteSphereImpact, PaperSphereCaseDeviatesFromHertzAsQuoted)
   const BodyParameters& lower = parameters.bodies.bodies.at(0);
   const BodyParameters& upper = parameters.bodies.bodies.at(1);
   const double radius         = 8.0;
-  const double speed          = lower.initial_velocity->value(Point<2>(0., -10.), 1) -
-                       upper.initial_velocity->value(Point<2>(0., 10.), 1);
+  const double speed          = lower.initial_velocity.create<2>(2)->value(Point<2>(0., -10.), 1) -
+                       upper.initial_velocity.create<2>(2)->value(Point<2>(0., 10.), 1);
   ASSERT_EQ(speed, 2.0);
   const FiniteSphereImpact impact(
       {radius, lower.youngs_modulus, lower.poissons_ratio, lower.density},

@@ -6,9 +6,9 @@
 //    discretizations; a declared pair that makes no candidate pair is an InputError naming it.
 //  - Runs: the rod impact against 1D wave theory (shared case 21), and node-to-segment between
 //    the flat ends against node-to-node and energy conservation (shared case 22).
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>

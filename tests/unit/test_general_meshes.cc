@@ -16,9 +16,9 @@
 //  - the model on the sphere and the block: no Hertz reference, the contact search radius;
 //  - the new parameters' range checks and bad boundary curves, one line of InputError each.
 // The second-order export of sphere_on_block.geo is read in test_gmsh_mesh.cc.
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/gmsh_mesh.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>

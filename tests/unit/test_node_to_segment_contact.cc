@@ -1,11 +1,11 @@
 // Unit tests of node-to-segment contact on Q2 faces (NodeToSegmentContact, QuadraticFace) on the
 // paper's mirrored two-sphere mesh, coarse (Refinement 0, shortest edge 0.26 at the poles), and on
 // a single circular face; apart from any time stepping.
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/node_to_segment_contact.h>
 #include <dyncontact/contact/quadratic_face.h>
 #include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/gmsh_mesh.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>

@@ -1,9 +1,9 @@
 // Acceptance tests of the paper's modified Newmark on non-matching meshes (node-to-segment pairs):
 // the identical spheres of section 6.4 at rho = 0.001, body 2 meshed with more divisions than
 // body 1 (meshes/two_spheres_nonmatching.geo), so that no slave node faces a master node.
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/reference/impact_measures.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/grid/tria.h>
 

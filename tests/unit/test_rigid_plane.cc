@@ -2,8 +2,8 @@
 // the plane is the lower half of two identical spheres striking each other, whose symmetry plane
 // is rigid and frictionless; the two runs must agree to round-off.
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/grid/tria.h>
 

@@ -17,12 +17,12 @@
 // near 10, so LU's forward error is below kappa n eps ~ 1e-14. The tolerance 1e-13 is ten times
 // that, while every wrong term (a sign, a missing mass or spring, a wrong multiplier row) changes
 // an answer by at least 0.05.
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/material/material.h>
+#include <dyncontact/simulation/parameter_reader.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 #include <dyncontact/solver/saddle_point_system.h>
 

@@ -2,10 +2,10 @@
 // 0.30000000000000004 in floating point, but a bar there touches one at 0.3), with a reference gap
 // of exactly zero, also far from the origin; an overlap beyond 1e-9 of an element is rejected
 // with the digits that show it.
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/models/bar_model.h>
+#include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>

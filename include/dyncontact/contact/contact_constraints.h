@@ -1,9 +1,9 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact/contact_pair.h>
+#include <dyncontact/contact/contact_parameters.h>
 #include <dyncontact/discretization/node_index.h>
 
 #include <deal.II/lac/dynamic_sparsity_pattern.h>

@@ -1,8 +1,8 @@
 #pragma once
 
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact/contact_description.h>
+#include <dyncontact/contact/contact_parameters.h>
 #include <dyncontact/contact/node_to_node_contact.h>
 #include <dyncontact/contact/penalty_sizing.h>
 #include <dyncontact/discretization/kinematics.h>

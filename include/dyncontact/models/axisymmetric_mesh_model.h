@@ -1,7 +1,8 @@
 #pragma once
 
-#include <dyncontact/base/parameters.h>
+#include <dyncontact/contact/contact_parameters.h>
 #include <dyncontact/models/gmsh_mesh.h>
+#include <dyncontact/models/mesh_parameters.h>
 #include <dyncontact/models/problem_model.h>
 #include <dyncontact/reference/finite_sphere_impact.h>
 #include <dyncontact/reference/hertz_impact.h>
@@ -175,6 +176,8 @@ private:
 
   MeshParameters mesh;
   BodiesParameters bodies;
+  /// per body: its initial velocity and surface traction, built from the parameters' expressions
+  std::vector<std::shared_ptr<Functions::ParsedFunction<2>>> initial_velocities, tractions;
   std::vector<ContactPairParameters> declared_pairs;
   MeshGeometry geometry;
   unsigned int n_cells;

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dyncontact/base/parameters.h>
+#include <dyncontact/models/bar_parameters.h>
 #include <dyncontact/models/problem_model.h>
 #include <dyncontact/reference/exact_bar_solution.h>
 

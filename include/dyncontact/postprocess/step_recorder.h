@@ -1,13 +1,13 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/models/problem_model.h>
 #include <dyncontact/postprocess/contact_fields.h>
 #include <dyncontact/postprocess/field_output.h>
 #include <dyncontact/postprocess/history.h>
+#include <dyncontact/postprocess/output_parameters.h>
 #include <dyncontact/postprocess/step_measures.h>
 #include <dyncontact/time_integration/step_state.h>
 

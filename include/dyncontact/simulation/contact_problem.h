@@ -1,7 +1,6 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
@@ -9,6 +8,7 @@
 #include <dyncontact/postprocess/body_impulses.h>
 #include <dyncontact/postprocess/step_measures.h>
 #include <dyncontact/simulation/body_discretization.h>
+#include <dyncontact/simulation/run_parameters.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
 #include <dyncontact/time_integration/implicit_stepper.h>

@@ -1,6 +1,6 @@
 #pragma once
 
-#include <dyncontact/base/parameters.h>
+#include <dyncontact/simulation/run_parameters.h>
 
 #include <ostream>
 

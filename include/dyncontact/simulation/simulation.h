@@ -1,7 +1,6 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
@@ -12,6 +11,7 @@
 #include <dyncontact/postprocess/step_recorder.h>
 #include <dyncontact/simulation/contact_problem.h>
 #include <dyncontact/simulation/problem_fingerprint.h>
+#include <dyncontact/simulation/run_parameters.h>
 #include <dyncontact/simulation/run_progress.h>
 #include <dyncontact/simulation/step_acceptance.h>
 #include <dyncontact/solver/contact_newton_solver.h>

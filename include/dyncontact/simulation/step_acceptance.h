@@ -1,12 +1,12 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/postprocess/body_impulses.h>
 #include <dyncontact/postprocess/contact_fields.h>
 #include <dyncontact/postprocess/step_measures.h>
+#include <dyncontact/simulation/guard_parameters.h>
 #include <dyncontact/simulation/step_guards.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
 

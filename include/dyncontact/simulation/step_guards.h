@@ -1,7 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
+#include <dyncontact/simulation/guard_parameters.h>
 
 #include <array>
 #include <boost/serialization/string.hpp>

@@ -1,10 +1,10 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/solver/dynamic_residual.h>
+#include <dyncontact/solver/newton_parameters.h>
 #include <dyncontact/solver/saddle_point_system.h>
 
 #include <deal.II/base/timer.h>

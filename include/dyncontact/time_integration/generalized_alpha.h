@@ -1,9 +1,9 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-#include <dyncontact/base/parameters.h>
 #include <dyncontact/time_integration/integrator_family.h>
 #include <dyncontact/time_integration/rate_map.h>
+#include <dyncontact/time_integration/time_integration_parameters.h>
 
 #include <deal.II/lac/vector.h>
 

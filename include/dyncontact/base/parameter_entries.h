@@ -1,0 +1,33 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <string>
+#include <vector>
+
+namespace dyncontact
+{
+// Helpers of the modules' parse_parameters(): an entry read with its allowed range, every error an
+// InputError naming `section/entry`.
+
+/**
+ * The text deal.II attaches to one of its exceptions, without file/line decoration, on one line:
+ * every run of white space (line breaks included) becomes one blank.
+ */
+std::string exception_text(const ExceptionBase& exception);
+
+/** Reads a double that must be strictly positive, naming `section/entry` if it is not. */
+double get_positive(ParameterHandler& prm, const std::string& entry, const std::string& section);
+
+/** Reads a number that must lie in [low, high], naming `section/entry` and the range if not. */
+double get_in_range(ParameterHandler& prm,
+                    const std::string& entry,
+                    const std::string& section,
+                    double low,
+                    double high);
+
+/** The numbers of "a, b, ..." (comma-separated); empty if one is not a number. */
+std::vector<double> parse_numbers(const std::string& text);
+} // namespace dyncontact

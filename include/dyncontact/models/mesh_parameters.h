@@ -1,0 +1,72 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/parsed_function.h>
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace dyncontact
+{
+/** The mesh of a mesh-based problem. Subsection `Mesh`. */
+struct MeshParameters
+{
+  std::string file; ///< resolved: relative paths are taken relative to the parameter file
+  std::map<std::string, double> geo_parameters;
+
+  static void declare_parameters(ParameterHandler& prm);
+  /** `parameter_file_directory` resolves a relative mesh file name. */
+  void parse_parameters(ParameterHandler& prm, const std::string& parameter_file_directory);
+};
+
+/**
+ * A vector function of position and time as a parameter file gives it (a deal.II ParsedFunction
+ * subsection: variable names, expression, constants), kept as text so that it is tied to no
+ * dimension until a model builds it.
+ */
+struct FunctionExpression
+{
+  std::string variables;
+  std::string expression;
+  std::string constants;
+
+  /**
+   * The ParsedFunction<dim> of these texts with `n_components` components. Throws deal.II's
+   * exception for a malformed expression (BodyParameters::parse_parameters() has checked them).
+   */
+  template <int dim>
+  std::shared_ptr<Functions::ParsedFunction<dim>> create(unsigned int n_components) const;
+};
+
+/** One body of a mesh-based problem. Subsection `Bodies/Body <b>`. */
+struct BodyParameters
+{
+  std::string material;
+  double youngs_modulus;
+  double poissons_ratio;
+  double density;
+  /// the coordinates (r, z) of the point whose nearest node is reported as u_tip_<b> etc.;
+  /// empty: the body's centroid (0, z_c)
+  std::vector<double> monitor_point;
+  /// the initial velocity (v_r; v_z) [length/time] of x = r, y = z, t
+  FunctionExpression initial_velocity;
+  /// the dead surface traction (T_r; T_z) [force/reference area] of x = r, y = z, t
+  FunctionExpression surface_traction;
+
+  static void declare_parameters(ParameterHandler& prm);
+  void parse_parameters(ParameterHandler& prm, const std::string& section);
+};
+
+/** The bodies of a mesh-based problem, body b = material id b - 1. Subsection `Bodies`. */
+struct BodiesParameters
+{
+  std::vector<BodyParameters> bodies;
+
+  static void declare_parameters(ParameterHandler& prm, unsigned int n_bodies);
+  void parse_parameters(ParameterHandler& prm);
+};
+} // namespace dyncontact

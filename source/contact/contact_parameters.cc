@@ -1,0 +1,160 @@
+#include <dyncontact/base/parameter_entries.h>
+#include <dyncontact/contact/contact_parameters.h>
+
+#include <sstream>
+
+namespace dyncontact
+{
+const NameTable<ContactFormulation>& contact_formulation_names()
+{
+  static const NameTable<ContactFormulation> names{
+      {"lagrange multiplier", ContactFormulation::lagrange_multiplier},
+      {"penalty", ContactFormulation::penalty}};
+  return names;
+}
+
+void ContactPairParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("slave boundary",
+                    "0",
+                    Patterns::Integer(0),
+                    "The slave surface of this pair: a boundary id, i.e. the tag of a gmsh "
+                    "physical curve of the mesh (>= 2; 1 is the symmetry axis). Its nodes carry "
+                    "the pair's multipliers.");
+  prm.declare_entry("master boundary",
+                    "0",
+                    Patterns::Integer(0),
+                    "The master surface: a boundary id (>= 2) of another body, or 0 for the rigid "
+                    "plane below. The slave nodes are projected onto it (node-to-segment) or "
+                    "paired with its facing nodes (node-to-node).");
+  prm.declare_entry("rigid plane",
+                    "",
+                    Patterns::Anything(),
+                    "With master boundary = 0: a fixed rigid plane (a line in the r-z plane) as "
+                    "'r, z; n_r, n_z': a point on it [length] and its normal pointing toward the "
+                    "body (normalized here), e.g. '0, 0; 0, 1' for the plane z = 0 below a body. "
+                    "Empty otherwise.");
+}
+
+void ContactPairParameters::parse_parameters(ParameterHandler& prm, const std::string& source)
+{
+  this->source           = source;
+  const auto slave       = prm.get_integer("slave boundary");
+  const auto master      = prm.get_integer("master boundary");
+  const std::string text = prm.get("rigid plane");
+  const bool has_plane   = text.find_first_not_of(" \t") != std::string::npos;
+  if (slave < 2)
+    throw InputError(source + "/slave boundary = " + std::to_string(slave) +
+                     " is not allowed: it must be a boundary id >= 2 (a gmsh physical curve "
+                     "tag; 1 is the symmetry axis).");
+  if (master == 1 || master == slave)
+    throw InputError(source + "/master boundary = " + std::to_string(master) +
+                     " is not allowed: it must be a boundary id >= 2 other than the slave "
+                     "boundary, or 0 for a rigid plane.");
+  if ((master != 0) == has_plane)
+    throw InputError(source +
+                     ": give either master boundary (>= 2) or rigid plane ('r, z; "
+                     "n_r, n_z' with master boundary = 0), not " +
+                     std::string(has_plane ? "both." : "neither."));
+  slave_boundary = slave;
+  if (master != 0)
+  {
+    master_boundary = master;
+    return;
+  }
+  const auto separator = text.find(';');
+  const std::vector<double> point =
+      parse_numbers(separator == std::string::npos ? text : text.substr(0, separator));
+  const std::vector<double> normal = separator == std::string::npos
+                                         ? std::vector<double>()
+                                         : parse_numbers(text.substr(separator + 1));
+  const double length              = normal.size() == 2 ? std::hypot(normal[0], normal[1]) : 0.;
+  if (point.size() != 2 || normal.size() != 2 || !(length > 0.))
+    throw InputError(source + "/rigid plane = '" + text +
+                     "' is not allowed: it must be 'r, z; n_r, n_z', a point and a nonzero "
+                     "normal.");
+  rigid_plane = RigidPlane{point, {normal[0] / length, normal[1] / length}};
+}
+
+void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_pairs)
+{
+  prm.enter_subsection("Contact");
+  prm.declare_entry("number of pairs",
+                    "0",
+                    Patterns::Integer(0, 100),
+                    "Mesh problems: how many contact pairs are declared, as subsections "
+                    "'Pair 1', 'Pair 2', ... 0: with two bodies, their surfaces of the sphere "
+                    "meshes (physical curves 2 and 3, body 1 the slave side); with one body, "
+                    "no contact; more bodies need declared pairs. Bars: 0.");
+  for (unsigned int k = 1; k <= n_pairs; ++k)
+  {
+    prm.enter_subsection("Pair " + std::to_string(k));
+    ContactPairParameters::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+  prm.declare_entry("dynamics",
+                    contact_dynamics_names().name(ContactParameters::default_dynamics),
+                    Patterns::Selection(contact_dynamics_names().selection()),
+                    contact_dynamics_documentation(ContactParameters::default_dynamics));
+  prm.declare_entry("formulation",
+                    "lagrange multiplier",
+                    Patterns::Selection(contact_formulation_names().selection()),
+                    "Enforcement of the non-penetration condition g >= 0. lagrange multiplier: "
+                    "exact, one multiplier unknown per candidate pair (saddle-point solve). "
+                    "penalty: force eps <-g> along the normal (allows small penetration).");
+  prm.declare_entry(
+      "discretization",
+      "node-to-node",
+      Patterns::Selection(contact_discretization_names().selection()),
+      "How the two bodies' contact surfaces meet (axisymmetric meshes). node-to-node: each "
+      "facing node of body 1 against the node of body 2 across from it; the facing surfaces "
+      "must have matching nodes (mirrored meshes). node-to-segment: each surface node of body 1 "
+      "(slave) against its closest point on the curved quadratic faces of body 2 (master), "
+      "for any meshes; the paper's rate correction (Contact/dynamics) acts on the slave node "
+      "and the master face's nodes. Both are the same on matching meshes.");
+  prm.declare_entry("penalty factor",
+                    "auto",
+                    Patterns::Anything(),
+                    "Penalty only: stiffness eps of a pair [force/length] = this factor [-] times "
+                    "E A / h of the stiffer side; a number > 0, or auto. Bars: A the "
+                    "cross-section, h the element length at the contact node; meshes: A the "
+                    "pair's contact area (2 pi r weighted), h the shortest cell edge. "
+                    "auto: 100 where the time step does not resolve the bodies' highest mode "
+                    "(omega dt > 2, the quasi-static contact of the spheres: penetration about "
+                    "1e-3 of the Hertz approach), else the largest factor <= 100 whose stiffest "
+                    "spring has omega dt <= 1 (wave problems such as the bars: an unresolved "
+                    "spring chatters, forces several times the exact ones). The run prints the "
+                    "factor it chose. "
+                    "With the classical scheme and beta < gamma/2 a large penalty needs a small "
+                    "time step (a run refuses one above the stability limit).");
+  prm.leave_subsection();
+}
+
+void ContactParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Contact");
+  formulation = contact_formulation_names().parse(prm.get("formulation"), "Contact/formulation");
+  dynamics    = contact_dynamics_names().parse(prm.get("dynamics"), "Contact/dynamics");
+  discretization =
+      contact_discretization_names().parse(prm.get("discretization"), "Contact/discretization");
+  const std::string factor = prm.get("penalty factor");
+  automatic_penalty        = factor == "auto";
+  penalty_factor           = quasi_static_penalty_factor;
+  if (!automatic_penalty)
+  {
+    std::istringstream stream(factor);
+    if (!(stream >> penalty_factor) || !(stream >> std::ws).eof() || !(penalty_factor > 0.))
+      throw InputError("Contact/penalty factor = " + factor +
+                       " is not allowed: it must be a number > 0 or auto.");
+  }
+  pairs.resize(prm.get_integer("number of pairs"));
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    const std::string name = "Pair " + std::to_string(k + 1);
+    prm.enter_subsection(name);
+    pairs[k].parse_parameters(prm, "Contact/" + name);
+    prm.leave_subsection();
+  }
+  prm.leave_subsection();
+}
+} // namespace dyncontact

@@ -1,0 +1,238 @@
+#include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/parameter_entries.h>
+#include <dyncontact/material/material.h>
+#include <dyncontact/models/gmsh_mesh.h>
+#include <dyncontact/models/mesh_parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <iostream>
+#include <optional>
+#include <sstream>
+
+namespace dyncontact
+{
+namespace
+{
+/**
+ * Sends what is written to std::cerr into a string while it exists: deal.II's FunctionParser
+ * prints muParser's diagnosis there, line by line, before it throws.
+ */
+class CapturedErrorStream
+{
+public:
+  CapturedErrorStream() : original(std::cerr.rdbuf(captured.rdbuf())) {}
+  ~CapturedErrorStream() { std::cerr.rdbuf(original); }
+  CapturedErrorStream(const CapturedErrorStream&)            = delete;
+  CapturedErrorStream& operator=(const CapturedErrorStream&) = delete;
+
+private:
+  std::ostringstream captured;
+  std::streambuf* original;
+};
+
+/**
+ * Reads the 2-component ParsedFunction in subsection `name` and evaluates each component once, at
+ * the origin and t = 0: muParser compiles an expression only when it is first evaluated, so an
+ * unknown function or a syntax error shows here and not in the middle of a run. Any problem
+ * becomes an InputError naming the entry and the expression.
+ */
+FunctionExpression
+parse_function(ParameterHandler& prm, const std::string& name, const std::string& section)
+{
+  prm.enter_subsection(name);
+  const FunctionExpression function{
+      prm.get("Variable names"), prm.get("Function expression"), prm.get("Function constants")};
+  prm.leave_subsection();
+  try
+  {
+    const auto parsed = function.create<2>(2);
+    const CapturedErrorStream quiet;
+    for (unsigned int component = 0; component < parsed->n_components; ++component)
+      parsed->value(Point<2>(), component);
+  }
+  catch (const ExceptionBase& exception)
+  {
+    throw InputError(
+        section + "/" + name + "/Function expression = '" + function.expression + "'" +
+        (function.constants.empty() ? "" : " (constants '" + function.constants + "')") + ": " +
+        exception_text(exception) +
+        "; it must give 2 components '(x-component); (y-component)' of x = r, y = z "
+        "and t in muParser syntax.");
+  }
+  return function;
+}
+} // namespace
+
+void MeshParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Mesh");
+  prm.declare_entry("file",
+                    "",
+                    Patterns::FileName(),
+                    "gmsh mesh: a .geo file (meshed through the gmsh API) or a .msh file. A "
+                    "relative path is relative to the directory of the parameter file. Physical "
+                    "surface b is body b, physical curve 1 the symmetry axis, every other physical "
+                    "curve a boundary of one body, a circle about the axis or a straight line; in "
+                    "the sphere meshes physical curve b + 1 is the surface of body b (see "
+                    "meshes/README.md).",
+                    true);
+  prm.declare_entry("geo parameters",
+                    "",
+                    Patterns::Map(Patterns::Anything(), Patterns::Double()),
+                    "Numbers set in a .geo file before meshing, as 'name: value' pairs separated "
+                    "by commas, e.g. 'R: 8, Refinement: 1' (see the file's header for its "
+                    "parameters). Ignored for .msh files.");
+  prm.leave_subsection();
+}
+
+void MeshParameters::parse_parameters(ParameterHandler& prm,
+                                      const std::string& parameter_file_directory)
+{
+  prm.enter_subsection("Mesh");
+  const std::filesystem::path given = prm.get("file");
+  file = (given.is_relative() ? std::filesystem::path(parameter_file_directory) / given : given)
+             .lexically_normal()
+             .string();
+  if (!std::filesystem::is_regular_file(file))
+    throw InputError("Mesh/file = '" + given.string() + "': no such file ('" + file +
+                     "'; relative paths are taken relative to the parameter file).");
+  const std::string extension = std::filesystem::path(file).extension().string();
+  if (extension != ".geo" && extension != ".msh")
+    throw InputError("Mesh/file = '" + given.string() + "': unknown extension '" + extension +
+                     "'; allowed are .geo (meshed by gmsh) and .msh (a gmsh mesh).");
+  // The record (parameters.prm) names the file absolutely, so it runs from any directory.
+  prm.set("file", std::filesystem::absolute(file).lexically_normal().string());
+  const std::string given_parameters = prm.get("geo parameters");
+  geo_parameters.clear();
+  for (const auto& pair : Utilities::split_string_list(given_parameters, ','))
+  {
+    const std::vector<std::string> name_and_value = Utilities::split_string_list(pair, ':');
+    geo_parameters[name_and_value[0]]             = Utilities::string_to_double(name_and_value[1]);
+  }
+  prm.leave_subsection();
+
+  if (geo_parameters.empty())
+    return;
+  if (extension == ".msh")
+    throw InputError("Mesh/geo parameters = '" + given_parameters + "': Mesh/file = '" +
+                     given.string() +
+                     "' is a finished mesh and takes no parameters; they apply to .geo files.");
+  const std::vector<std::string> known = geo_file_parameters(file);
+  for (const auto& [name, value] : geo_parameters)
+    if (std::find(known.begin(), known.end(), name) == known.end())
+    {
+      std::string names;
+      for (const std::string& known_name : known)
+        names += (names.empty() ? "" : ", ") + known_name;
+      throw InputError("Mesh/geo parameters = '" + given_parameters + "': '" + given.string() +
+                       "' has no parameter '" + name +
+                       "'; its parameters are: " + (names.empty() ? "none" : names) + ".");
+    }
+}
+
+void BodyParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("material",
+                    "linear elastic",
+                    Patterns::Selection(material_names()),
+                    "Hyperelastic law: linear elastic (small strain), st venant-kirchhoff, or "
+                    "neo-hookean (compressible, W = mu/2 (I1 - 3) - mu ln J + lambda/2 (ln J)^2).");
+  prm.declare_entry("Young's modulus", "1", Patterns::Double(), "E [force/length^2], > 0.", true);
+  prm.declare_entry(
+      "Poisson's ratio", "0.3", Patterns::Double(-1., 0.5), "nu [-], -1 < nu < 0.5.", true);
+  prm.declare_entry("density", "1", Patterns::Double(), "rho [mass/length^3], > 0.", true);
+  prm.declare_entry(
+      "monitor point",
+      "",
+      Patterns::Anything(),
+      "(r, z) [length] of the point whose nearest node of this body is reported in "
+      "the history as u_tip_<b>, v_tip_<b>, a_tip_<b> (axial components); it must lie "
+      "in the body or within one cell of it. Empty: the body's centroid on the axis "
+      "(0, z_c), the centre of a sphere.");
+  prm.enter_subsection("Initial velocity");
+  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
+  prm.leave_subsection();
+  // Documented in the README: (T_r; T_z) of x = r, y = z, t, force per unit reference area.
+  prm.enter_subsection("Surface traction");
+  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
+  prm.leave_subsection();
+}
+
+void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+{
+  material       = prm.get("material");
+  youngs_modulus = get_positive(prm, "Young's modulus", section);
+  poissons_ratio = prm.get_double("Poisson's ratio");
+  if (!(poissons_ratio > -1. && poissons_ratio < 0.5))
+    throw InputError(section + "/Poisson's ratio = " + prm.get("Poisson's ratio") +
+                     " is not allowed: it must satisfy -1 < nu < 0.5.");
+  density                      = get_positive(prm, "density", section);
+  const std::string point_text = Utilities::trim(prm.get("monitor point"));
+  monitor_point.clear();
+  if (!point_text.empty())
+  {
+    const std::vector<std::string> point = Utilities::split_string_list(point_text);
+    if (point.size() != 2 || !Patterns::Double().match(point[0]) ||
+        !Patterns::Double().match(point[1]))
+      throw InputError(section + "/monitor point = '" + point_text +
+                       "' is not a point: give r, z (two numbers), or leave it empty for the "
+                       "body's centroid.");
+    monitor_point = {Utilities::string_to_double(point[0]), Utilities::string_to_double(point[1])};
+  }
+  initial_velocity = parse_function(prm, "Initial velocity", section);
+  surface_traction = parse_function(prm, "Surface traction", section);
+}
+
+void BodiesParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_bodies)
+{
+  prm.enter_subsection("Bodies");
+  prm.declare_entry("number of bodies",
+                    "1",
+                    Patterns::Integer(1, 100),
+                    "Number of bodies of the mesh [-], 1..100; body b is described in subsection "
+                    "'Body b' and is physical surface b of the mesh.");
+  for (unsigned int body = 0; body < n_bodies; ++body)
+  {
+    prm.enter_subsection("Body " + std::to_string(body + 1));
+    BodyParameters::declare_parameters(prm);
+    prm.leave_subsection();
+  }
+  prm.leave_subsection();
+}
+
+void BodiesParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Bodies");
+  bodies.resize(prm.get_integer("number of bodies"));
+  for (unsigned int body = 0; body < bodies.size(); ++body)
+  {
+    const std::string name = "Body " + std::to_string(body + 1);
+    prm.enter_subsection(name);
+    bodies[body].parse_parameters(prm, "Bodies/" + name);
+    prm.leave_subsection();
+  }
+  prm.leave_subsection();
+}
+template <int dim>
+std::shared_ptr<Functions::ParsedFunction<dim>>
+FunctionExpression::create(const unsigned int n_components) const
+{
+  ParameterHandler prm;
+  Functions::ParsedFunction<dim>::declare_parameters(prm, n_components);
+  prm.set("Variable names", variables);
+  prm.set("Function expression", expression);
+  prm.set("Function constants", constants);
+  auto function = std::make_shared<Functions::ParsedFunction<dim>>(n_components);
+  function->parse_parameters(prm);
+  return function;
+}
+
+#define DYNCONTACT_INSTANTIATE(dim)                                                                \
+  template std::shared_ptr<Functions::ParsedFunction<dim>> FunctionExpression::create<dim>(        \
+      unsigned int) const;
+DYNCONTACT_FOR_EACH_DIMENSION(DYNCONTACT_INSTANTIATE)
+#undef DYNCONTACT_INSTANTIATE
+} // namespace dyncontact
