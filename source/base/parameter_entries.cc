@@ -1,6 +1,5 @@
 #include <dyncontact/base/parameter_entries.h>
 
-#include <cmath>
 #include <sstream>
 
 namespace dyncontact
@@ -43,21 +42,5 @@ double get_in_range(ParameterHandler& prm,
                      " is not allowed: it must lie in " + format_number(low) + ".." +
                      format_number(high) + ".");
   return value;
-}
-
-/** The numbers of "a, b, ..." (comma-separated); empty if one is not a number. */
-std::vector<double> parse_numbers(const std::string& text)
-{
-  std::vector<double> numbers;
-  std::istringstream fields(text);
-  for (std::string field; std::getline(fields, field, ',');)
-  {
-    std::istringstream stream(field);
-    double value;
-    if (!(stream >> value) || !(stream >> std::ws).eof() || !std::isfinite(value))
-      return {};
-    numbers.push_back(value);
-  }
-  return numbers;
 }
 } // namespace dyncontact

@@ -1,10 +1,30 @@
 #include <dyncontact/base/parameter_entries.h>
 #include <dyncontact/contact/contact_parameters.h>
 
+#include <cmath>
 #include <sstream>
 
 namespace dyncontact
 {
+namespace
+{
+/** The numbers of "a, b, ..." (comma-separated); empty if one is not a number. */
+std::vector<double> parse_numbers(const std::string& text)
+{
+  std::vector<double> numbers;
+  std::istringstream fields(text);
+  for (std::string field; std::getline(fields, field, ',');)
+  {
+    std::istringstream stream(field);
+    double value;
+    if (!(stream >> value) || !(stream >> std::ws).eof() || !std::isfinite(value))
+      return {};
+    numbers.push_back(value);
+  }
+  return numbers;
+}
+} // namespace
+
 const NameTable<ContactFormulation>& contact_formulation_names()
 {
   static const NameTable<ContactFormulation> names{

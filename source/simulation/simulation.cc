@@ -336,7 +336,7 @@ void Simulation<dim>::run(const std::string& resume_directory)
                     controller->finished(),
                     static_cast<long>(problem->contact->n_active()) != active_before,
                     problem->contact->n_active(),
-                    history().value(history().n_rows() - 1, "algorithmic_energy"));
+                    measures.algorithmic_energy);
   }
   finish();
 }

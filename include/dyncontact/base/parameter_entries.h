@@ -28,6 +28,4 @@ double get_in_range(ParameterHandler& prm,
                     double low,
                     double high);
 
-/** The numbers of "a, b, ..." (comma-separated); empty if one is not a number. */
-std::vector<double> parse_numbers(const std::string& text);
 } // namespace dyncontact
