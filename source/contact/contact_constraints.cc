@@ -11,43 +11,90 @@ namespace dyncontact
 template <int dim>
 ContactConstraints<dim>::ContactConstraints(std::vector<ContactPair<dim>> pairs,
                                             const ContactFormulation formulation)
-    : pairs(std::move(pairs)), formulation(formulation), active(this->pairs.size(), false),
-      multiplier_values(this->pairs.size())
+    : volume_pairs(std::move(pairs)), formulation(formulation), active(volume_pairs.size(), false)
 {
+  std::vector<std::vector<Node<dim>>> nodes_of_pairs(volume_pairs.size());
+  for (unsigned int k = 0; k < volume_pairs.size(); ++k)
+    volume_pairs[k].for_each_node([&](const Node<dim>& node, double)
+                                  { nodes_of_pairs[k].push_back(node); });
+  build_border(nodes_of_pairs);
 }
 
 template <int dim>
 ContactConstraints<dim>::ContactConstraints(const ContactGeometry<dim>& geometry,
                                             const ContactFormulation formulation)
-    : ContactConstraints(geometry.pairs(), formulation)
+    : volume_pairs(geometry.pairs()), geometry(&geometry), formulation(formulation),
+      active(volume_pairs.size(), false)
 {
-  this->geometry = &geometry;
   // Every geometry's constructor throws InputError instead (the run indexes its pairs).
-  AssertThrow(!pairs.empty(), ExcMessage("a contact geometry without candidate pairs"));
-  for (const ContactPair<dim>& pair : pairs)
+  AssertThrow(!volume_pairs.empty(), ExcMessage("a contact geometry without candidate pairs"));
+  for (const ContactPair<dim>& pair : volume_pairs)
     AssertThrow(std::isfinite(pair.normal.norm()),
                 ExcMessage("a contact pair with a normal that is not finite"));
+  std::vector<std::vector<Node<dim>>> nodes_of_pairs;
+  for (unsigned int k = 0; k < volume_pairs.size(); ++k)
+    nodes_of_pairs.push_back(geometry.coupled_nodes(k));
+  build_border(nodes_of_pairs);
+}
+
+template <int dim>
+void ContactConstraints<dim>::build_border(
+    const std::vector<std::vector<Node<dim>>>& nodes_of_pairs)
+{
+  std::vector<Node<dim>> all_nodes;
+  for (const auto& nodes : nodes_of_pairs)
+    all_nodes.insert(all_nodes.end(), nodes.begin(), nodes.end());
+  contact_border = ContactBorder<dim>(all_nodes);
+  for (const auto& nodes : nodes_of_pairs)
+  {
+    std::vector<unsigned int> indices;
+    for (const Node<dim>& node : nodes)
+      indices.push_back(contact_border.border_node(node).dofs[0] / dim);
+    std::sort(indices.begin(), indices.end());
+    indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
+    coupled_nodes.push_back(std::move(indices));
+  }
+  block = MultiplierBlock(std::vector<unsigned int>(volume_pairs.size(), 1));
+  multiplier_values.reinit(block.n_multipliers());
+  move_pairs_to_border();
+}
+
+template <int dim>
+void ContactConstraints<dim>::move_pairs_to_border()
+{
+  pairs = volume_pairs;
+  for (ContactPair<dim>& pair : pairs)
+  {
+    pair.slave = contact_border.border_node(pair.slave);
+    for (MasterNode<dim>& master : pair.masters)
+      master.node = contact_border.border_node(master.node);
+  }
 }
 
 template <int dim>
 void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement)
 {
-  if (geometry != nullptr)
-    geometry->update_pairs(displacement, pairs);
+  if (geometry == nullptr)
+    return;
+  geometry->update_pairs(displacement, volume_pairs);
+  move_pairs_to_border();
 }
 
 template <int dim>
 void ContactConstraints<dim>::update_master_points(const Vector<double>& displacement)
 {
-  if (geometry != nullptr)
-    geometry->update_master_points(displacement, pairs);
+  if (geometry == nullptr)
+    return;
+  geometry->update_master_points(displacement, volume_pairs);
+  move_pairs_to_border();
 }
 
 template <int dim>
 void ContactConstraints<dim>::scale_penalty_stiffness(const double factor)
 {
-  for (auto& pair : pairs)
-    pair.penalty_stiffness *= factor;
+  for (auto* some_pairs : {&volume_pairs, &pairs})
+    for (auto& pair : *some_pairs)
+      pair.penalty_stiffness *= factor;
 }
 
 template <int dim>
@@ -89,44 +136,11 @@ double ContactConstraints<dim>::constraint_gap(const unsigned int pair_index,
 }
 
 template <int dim>
-template <typename Function>
-void ContactConstraints<dim>::for_each_coupled_dof(const unsigned int k, const Function& f) const
-{
-  if (geometry != nullptr)
-    for (const auto dof : geometry->coupled_dofs(k))
-      f(dof);
-  else
-    pairs[k].for_each_node(
-        [&](const Node<dim>& node, double)
-        {
-          for (unsigned int d = 0; d < dim; ++d)
-            f(node.dofs[d]);
-        });
-}
-
-template <int dim>
-void ContactConstraints<dim>::add_to_sparsity(DynamicSparsityPattern& sparsity,
-                                              const types::global_dof_index n_dofs) const
-{
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-  {
-    const types::global_dof_index row = n_dofs + k;
-    sparsity.add(row, row);
-    for_each_coupled_dof(k,
-                         [&](const types::global_dof_index dof)
-                         {
-                           sparsity.add(row, dof);
-                           sparsity.add(dof, row);
-                         });
-  }
-}
-
-template <int dim>
 std::vector<bool> ContactConstraints<dim>::contact_dofs(const types::global_dof_index n_dofs) const
 {
   std::vector<bool> flags(n_dofs, false);
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-    for_each_coupled_dof(k, [&](const types::global_dof_index dof) { flags[dof] = true; });
+  for (unsigned int i = 0; i < contact_border.n_dofs(); ++i)
+    flags[contact_border.volume_dof(i)] = true;
   return flags;
 }
 
@@ -139,49 +153,44 @@ void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
         [&](const Node<dim>& node, const double coefficient)
         {
           for (unsigned int d = 0; d < dim; ++d)
-            force[node.dofs[d]] += coefficient * pairs[k].normal[d] * multiplier_values[k];
+            force[node.dofs[d]] +=
+                coefficient * pairs[k].normal[d] * multiplier_values[block.index(k)];
         });
 }
 
 template <int dim>
 void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& displacement,
                                                        const double inactive_diagonal,
-                                                       TrilinosWrappers::SparseMatrix* matrix,
+                                                       MultiplierRows* rows,
                                                        Vector<double>& constraint_residual) const
 {
-  const types::global_dof_index n_dofs = displacement.size();
-  const auto add                       = [matrix](const types::global_dof_index row,
-                            const types::global_dof_index column,
-                            const double value)
-  {
-    if (matrix != nullptr)
-      matrix->add(row, column, value);
-  };
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
-    const types::global_dof_index row = n_dofs + k;
+    const unsigned int multiplier = block.index(k);
     if (!active[k])
     {
-      add(row, row, inactive_diagonal);
-      constraint_residual[k] = inactive_diagonal * multiplier_values[k];
+      if (rows != nullptr)
+        rows->add_diagonal(multiplier, inactive_diagonal);
+      constraint_residual[multiplier] = inactive_diagonal * multiplier_values[multiplier];
       continue;
     }
     // Rows of the symmetric system [K_eff, -G^T; -G, -D]: -G = -c_j n at the pair's nodes.
-    pairs[k].for_each_node(
-        [&](const Node<dim>& node, const double coefficient)
-        {
-          for (unsigned int d = 0; d < dim; ++d)
+    if (rows != nullptr)
+      pairs[k].for_each_node(
+          [&](const Node<dim>& node, const double coefficient)
           {
-            const double entry = -coefficient * pairs[k].normal[d];
-            add(row, node.dofs[d], entry);
-            add(node.dofs[d], row, entry);
-          }
-        });
-    constraint_residual[k] = -constraint_gap(k, displacement);
+            for (unsigned int d = 0; d < dim; ++d)
+              rows->add_coupling(multiplier,
+                                 contact_border.volume_dof(node.dofs[d]),
+                                 -coefficient * pairs[k].normal[d]);
+          });
+    constraint_residual[multiplier] = -constraint_gap(k, displacement);
     if (formulation == ContactFormulation::penalty)
     {
-      add(row, row, -force_factor / pairs[k].penalty_stiffness);
-      constraint_residual[k] -= force_factor * multiplier_values[k] / pairs[k].penalty_stiffness;
+      if (rows != nullptr)
+        rows->add_diagonal(multiplier, -force_factor / pairs[k].penalty_stiffness);
+      constraint_residual[multiplier] -=
+          force_factor * multiplier_values[multiplier] / pairs[k].penalty_stiffness;
     }
   }
 }
@@ -197,15 +206,16 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
                                                 const double gap_tolerance,
                                                 const double force_tolerance)
 {
-  bool changed = false;
+  const Vector<double> border_displacement = contact_border.gather(displacement);
+  bool changed                             = false;
   std::vector<unsigned int> tensile_pairs;
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (!active[k] && constraint_gap(k, displacement) < -gap_tolerance)
+    if (!active[k] && constraint_gap(k, border_displacement) < -gap_tolerance)
     {
       active[k] = true;
       changed   = true;
     }
-    else if (active[k] && multiplier_values[k] < -force_tolerance)
+    else if (active[k] && multiplier_values[block.index(k)] < -force_tolerance)
       tensile_pairs.push_back(k);
   // On a surface, a tensile nodal force inside compressed surroundings (the zero-area axis node of
   // an axisymmetric Q2 surface) is not a tensile traction: such a pair stays closed. Not so for a
@@ -217,9 +227,10 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
   for (const unsigned int k : tensile_pairs)
     if (pressures.empty() || !(pressures[k] > 0.)) // a zero or undefined pressure releases too
     {
-      active[k]            = false;
-      multiplier_values[k] = 0.;
-      changed              = true;
+      active[k] = false;
+      for (unsigned int c = 0; c < block.n_components(k); ++c)
+        multiplier_values[block.index(k, c)] = 0.;
+      changed = true;
     }
   return changed;
 }

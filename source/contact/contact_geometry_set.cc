@@ -54,13 +54,12 @@ void ContactGeometrySet<dim>::update_master_points(const Vector<double>& displac
 }
 
 template <int dim>
-std::vector<types::global_dof_index>
-ContactGeometrySet<dim>::coupled_dofs(const unsigned int k) const
+std::vector<Node<dim>> ContactGeometrySet<dim>::coupled_nodes(const unsigned int k) const
 {
   const unsigned int m =
       std::distance(first_pair.begin(), std::upper_bound(first_pair.begin(), first_pair.end(), k)) -
       1;
-  return members[m]->coupled_dofs(k - first_pair[m]);
+  return members[m]->coupled_nodes(k - first_pair[m]);
 }
 
 template <int dim>

@@ -192,10 +192,12 @@ void NodeToNodeContact<dim>::update_pairs(const Vector<double>& displacement,
 }
 
 template <int dim>
-std::vector<types::global_dof_index>
-NodeToNodeContact<dim>::coupled_dofs(const unsigned int k) const
+std::vector<Node<dim>> NodeToNodeContact<dim>::coupled_nodes(const unsigned int k) const
 {
-  return candidate_pairs[k].dofs();
+  std::vector<Node<dim>> nodes;
+  candidate_pairs[k].for_each_node([&nodes](const Node<dim>& node, double)
+                                   { nodes.push_back(node); });
+  return nodes;
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(NodeToNodeContact)

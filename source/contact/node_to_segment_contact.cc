@@ -242,20 +242,13 @@ void NodeToSegmentContact<dim>::update_master_points(const Vector<double>& displ
 }
 
 template <int dim>
-std::vector<types::global_dof_index>
-NodeToSegmentContact<dim>::coupled_dofs(const unsigned int k) const
+std::vector<Node<dim>> NodeToSegmentContact<dim>::coupled_nodes(const unsigned int k) const
 {
-  std::vector<types::global_dof_index> dofs(candidate_pairs[k].slave.dofs.begin(),
-                                            candidate_pairs[k].slave.dofs.end());
+  std::vector<Node<dim>> nodes = {candidate_pairs[k].slave};
   for (const unsigned int face : candidate_faces_of_pair[k])
     for (const unsigned int node : master_surface.face_nodes()[face])
-    {
-      const auto& node_dofs = master_surface.nodes()[node].dofs;
-      dofs.insert(dofs.end(), node_dofs.begin(), node_dofs.end());
-    }
-  std::sort(dofs.begin(), dofs.end());
-  dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
-  return dofs;
+      nodes.push_back(master_surface.nodes()[node]);
+  return nodes;
 }
 
 template <int dim>

@@ -15,11 +15,12 @@ double penalty_spring_omega_dt(const ContactConstraints<dim>& contact,
   double spring_omega_dt = 0.;
   if (contact.contact_formulation() != ContactFormulation::penalty)
     return spring_omega_dt;
+  const Vector<double> border_mass = contact.border().gather(lumped_mass);
   for (const auto& pair : contact.candidate_pairs())
   {
     // A spring on a massless node (Contact/dynamics = mass-redistribution) is no mode of its own:
     // that node follows its neighbours quasi-statically, in series with the spring.
-    const double inverse_mass = pair.inverse_effective_mass(lumped_mass);
+    const double inverse_mass = pair.inverse_effective_mass(border_mass);
     if (std::isfinite(inverse_mass))
       spring_omega_dt =
           std::max(spring_omega_dt, time_step * std::sqrt(pair.penalty_stiffness * inverse_mass));

@@ -43,10 +43,12 @@ RigidPlaneContact<dim>::RigidPlaneContact(ContactSurface<dim> surface,
 }
 
 template <int dim>
-std::vector<types::global_dof_index>
-RigidPlaneContact<dim>::coupled_dofs(const unsigned int k) const
+std::vector<Node<dim>> RigidPlaneContact<dim>::coupled_nodes(const unsigned int k) const
 {
-  return candidate_pairs[k].dofs();
+  std::vector<Node<dim>> nodes;
+  candidate_pairs[k].for_each_node([&nodes](const Node<dim>& node, double)
+                                   { nodes.push_back(node); });
+  return nodes;
 }
 
 template <int dim>

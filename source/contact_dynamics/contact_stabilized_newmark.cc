@@ -10,8 +10,8 @@ namespace
 {
 /**
  * The shift s = M^-1 B^T mu, mu >= 0, that closes the pairs penetrating at `position` (the mass
- * projection onto g >= 0, by the active-set rounds of the class documentation), as a whole
- * vector; zero if no pair penetrates.
+ * projection onto g >= 0, by the active-set rounds of the class documentation), as a
+ * border vector; zero if no pair penetrates.
  */
 template <int dim>
 Vector<double> projection_shift(const ContactConstraints<dim>& contact,

@@ -32,7 +32,7 @@ void BodyImpulses<dim>::index(const std::vector<Node<dim>>& nodes,
         [&](const Node<dim>& node, double)
         {
           for (unsigned int d = 0; d < dim; ++d)
-            is_contact_dof[node.dofs[d]] = true;
+            is_contact_dof[contact.border().volume_dof(node.dofs[d])] = true;
         });
 }
 
@@ -55,7 +55,7 @@ std::vector<bool> BodyImpulses<dim>::active_pair_dofs() const
           [&](const Node<dim>& node, double)
           {
             for (unsigned int d = 0; d < dim; ++d)
-              in_active_pair[node.dofs[d]] = true;
+              in_active_pair[contact.border().volume_dof(node.dofs[d])] = true;
           });
   return in_active_pair;
 }

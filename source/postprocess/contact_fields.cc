@@ -37,12 +37,16 @@ double ContactFields<dim>::recovered_contact_force(const Vector<double>& lumped_
                                                    const Vector<double>& acceleration,
                                                    const Vector<double>& net_internal_force) const
 {
-  const auto& pairs = contact.candidate_pairs();
-  double force      = 0.;
+  const auto& pairs                  = contact.candidate_pairs();
+  const ContactBorder<dim>& border   = contact.border();
+  const Vector<double> border_mass   = border.gather(lumped_mass),
+                       border_acc    = border.gather(acceleration),
+                       border_forces = border.gather(net_internal_force);
+  double force                       = 0.;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (contact.is_active(k))
-      force -= normal_balance(
-          pairs[k].slave, pairs[k].normal, lumped_mass, acceleration, net_internal_force);
+      force -=
+          normal_balance(pairs[k].slave, pairs[k].normal, border_mass, border_acc, border_forces);
   return force;
 }
 
@@ -55,9 +59,13 @@ ContactFields<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
 {
   // Every node of an active pair between bodies counts once, on its side (a slave node on A, a
   // master node on B), however many pairs hold it (node-to-segment).
-  const auto& pairs = contact.candidate_pairs();
+  const auto& pairs                  = contact.candidate_pairs();
+  const ContactBorder<dim>& border   = contact.border();
+  const Vector<double> border_mass   = border.gather(lumped_mass),
+                       border_acc    = border.gather(acceleration),
+                       border_forces = border.gather(net_internal_force);
   SideForces forces{0., 0.};
-  std::vector<bool> counted(lumped_mass.size(), false);
+  std::vector<bool> counted(border.n_dofs(), false);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (contact.is_active(k) && !pairs[k].against_wall())
       pairs[k].for_each_node(
@@ -67,7 +75,7 @@ ContactFields<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
               return;
             counted[node.dofs[0]] = true;
             const double balance =
-                normal_balance(node, direction, lumped_mass, acceleration, net_internal_force);
+                normal_balance(node, direction, border_mass, border_acc, border_forces);
             (coefficient < 0. ? forces.on_a : forces.on_b) += coefficient < 0. ? -balance : balance;
           });
   return forces;
@@ -87,44 +95,50 @@ double ContactFields<dim>::event_work(const Vector<double>& old_displacement,
                                       const Vector<double>& new_displacement,
                                       const typename ContactConstraints<dim>::State& old) const
 {
-  double work = 0.;
+  const Vector<double> old_border = contact.border().gather(old_displacement),
+                       new_border = contact.border().gather(new_displacement);
+  double work                     = 0.;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
     if (contact.is_active(k) && !old.active[k])
-      work += 0.5 * contact.pair_force(k) * std::max(0., contact.gap(k, old_displacement));
+      work += 0.5 * contact.pair_force(k) * std::max(0., contact.gap(k, old_border));
     else if (!contact.is_active(k) && old.active[k])
-      work += 0.5 * contact.force_per_multiplier() * old.multipliers[k] *
-              std::max(0., contact.gap(k, new_displacement));
+      work += 0.5 * contact.force_per_multiplier() *
+              old.multipliers[contact.multiplier_block().index(k)] *
+              std::max(0., contact.gap(k, new_border));
   return work;
 }
 
 template <int dim>
 double ContactFields<dim>::max_penetration(const Vector<double>& displacement) const
 {
-  double penetration = 0.;
+  const Vector<double> border_displacement = contact.border().gather(displacement);
+  double penetration                       = 0.;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
-    penetration = std::max(penetration, -contact.gap(k, displacement));
+    penetration = std::max(penetration, -contact.gap(k, border_displacement));
   return penetration;
 }
 
 template <int dim>
 double ContactFields<dim>::max_active_normal_jump(const Vector<double>& field) const
 {
-  double jump = 0.;
+  const Vector<double> border_field = contact.border().gather(field);
+  double jump                       = 0.;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
     if (contact.is_active(k))
-      jump = std::max(jump, std::abs(contact.candidate_pairs()[k].normal_jump(field)));
+      jump = std::max(jump, std::abs(contact.candidate_pairs()[k].normal_jump(border_field)));
   return jump;
 }
 
 template <int dim>
 double ContactFields<dim>::contact_radius(const Vector<double>& displacement) const
 {
-  double radius = 0.;
+  const Vector<double> border_displacement = contact.border().gather(displacement);
+  double radius                            = 0.;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
     if (contact.is_active(k))
-      radius = std::max(
-          radius,
-          distance_from_axis(current_position(contact.candidate_pairs()[k].slave, displacement)));
+      radius = std::max(radius,
+                        distance_from_axis(current_position(contact.candidate_pairs()[k].slave,
+                                                            border_displacement)));
   return radius;
 }
 
@@ -132,7 +146,7 @@ template <int dim>
 Vector<double> ContactFields<dim>::traction(const std::vector<double>& pressures,
                                             const unsigned int n_dofs) const
 {
-  Vector<double> traction(n_dofs);
+  Vector<double> traction(contact.border().n_dofs());
   // The slave node's pressure along -n on body A; on body B distributed to the master nodes by
   // their weights (node-to-node: the facing node's own pressure).
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
@@ -143,7 +157,9 @@ Vector<double> ContactFields<dim>::traction(const std::vector<double>& pressures
             traction[node.dofs[d]] +=
                 coefficient * pressures[k] * contact.candidate_pairs()[k].normal[d];
         });
-  return traction;
+  Vector<double> volume_traction(n_dofs);
+  contact.border().scatter_add(traction, volume_traction);
+  return volume_traction;
 }
 
 template <int dim>
@@ -151,13 +167,15 @@ std::vector<typename FieldOutput<dim>::PressureSample>
 ContactFields<dim>::pressure_samples(const std::vector<double>& pressures,
                                      const Vector<double>& displacement) const
 {
+  const ContactBorder<dim>& border         = contact.border();
+  const Vector<double> border_displacement = border.gather(displacement);
   std::vector<typename FieldOutput<dim>::PressureSample> samples;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
   {
     const Node<dim>& slave = contact.candidate_pairs()[k].slave;
-    samples.push_back({slave,
-                       current_position(slave, displacement),
-                       contact.gap(k, displacement),
+    samples.push_back({border.volume_node(slave.dofs[0] / dim),
+                       current_position(slave, border_displacement),
+                       contact.gap(k, border_displacement),
                        contact.pair_force(k),
                        pressures[k],
                        contact.is_active(k)});

@@ -39,7 +39,8 @@ struct ContactNewtonSolver<dim>::Iteration
   std::optional<StateBeforeUpdate> before_update = {};
   /** Modified Newton: the active set at which this step's tangent was assembled (empty: none). */
   std::optional<std::vector<bool>> tangent_active_set = {};
-  Vector<double> newton_update                        = {};
+  Vector<double> newton_update                        = {}; ///< of the displacement
+  Vector<double> multiplier_update                    = {};
   double step_length                                  = 1.;
 };
 
@@ -64,7 +65,7 @@ ContactNewtonSolver<dim>::ContactNewtonSolver(
     : contact(contact), parameters(parameters),
       gap_tolerance((parameters.residual_tolerance + DynamicResidual<dim>::roundoff_factor) *
                     length_scale),
-      timer(timer), alpha_f(alpha_f), n_dofs(dof_handler.n_dofs()),
+      timer(timer), alpha_f(alpha_f),
       system(dof_handler, contact, fixed_dofs, parameters.direct_solver),
       residual(bodies, contact, lumped_mass, fixed_dofs)
 {
@@ -271,14 +272,15 @@ template <int dim>
 void ContactNewtonSolver<dim>::take_newton_update(
     Iteration& iteration, const typename DynamicResidual<dim>::Figures& figures)
 {
-  Vector<double> right_hand_side = residual.residual();
+  Vector<double> right_hand_side = system.stack(residual.force_rows(), residual.constraint_rows());
   right_hand_side *= -1.;
   // Modified Newton reuses what it can: low-rank updates of the factors for pairs entering or
   // leaving; full Newton keeps fresh factorizations of every changed tangent (the reference).
   system.update_factorization(parameters.method == NewtonMethod::modified, &timer);
   {
     TimerOutput::Scope solve_scope(timer, "linear solve");
-    iteration.newton_update = system.solve(right_hand_side);
+    system.split(
+        system.solve(right_hand_side), iteration.newton_update, iteration.multiplier_update);
   }
   ++iteration.linear_solves;
   iteration.before_update = typename Iteration::StateBeforeUpdate{
@@ -292,15 +294,14 @@ void ContactNewtonSolver<dim>::move_along_update(Iteration& iteration, const dou
 {
   const double length = iteration.step_length;
   iteration.increment = iteration.before_update->increment;
-  for (types::global_dof_index i = 0; i < n_dofs; ++i)
+  for (types::global_dof_index i = 0; i < iteration.increment.size(); ++i)
     iteration.increment[i] += length * iteration.newton_update[i];
   iteration.displacement = iteration.step.predictor;
   iteration.displacement += iteration.increment;
 
   contact.restore(iteration.before_update->contact);
-  Vector<double> multiplier_increment(contact.n_pairs());
-  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
-    multiplier_increment[k] = length * iteration.newton_update[n_dofs + k];
+  Vector<double> multiplier_increment = iteration.multiplier_update;
+  multiplier_increment *= length;
   contact.add_multiplier_increment(multiplier_increment);
   move_master_points(iteration);
   iteration.active_set_changed = contact.update_active_set(

@@ -13,8 +13,9 @@ DynamicResidual<dim>::DynamicResidual(const ElasticBodies<dim>& bodies,
                                       const std::vector<types::global_dof_index>& fixed_dofs)
     : bodies(bodies), contact(contact), lumped_mass(lumped_mass),
       is_fixed(lumped_mass.size(), false), inertia_force(lumped_mass.size()),
-      contact_force(lumped_mass.size()), constraint_residual(contact.n_pairs()),
-      residual_values(lumped_mass.size() + contact.n_pairs())
+      contact_force(lumped_mass.size()),
+      constraint_residual(contact.multiplier_block().n_multipliers()),
+      force_residual(lumped_mass.size())
 {
   for (const auto dof : fixed_dofs)
     is_fixed[dof] = true;
@@ -61,13 +62,16 @@ void DynamicResidual<dim>::assemble(const Step& step,
     if (tangent != nullptr && tangent->owns_row(i))
       tangent->matrix().add(i, i, step.inertia_factor * lumped_mass[i]);
   }
+  // The contact layer works on the contact border: G^T lambda there, scattered to the volume.
+  const ContactBorder<dim>& border = contact.border();
+  Vector<double> border_force(border.n_dofs());
+  contact.add_contact_forces(border_force);
   contact_force = 0.;
-  contact.add_contact_forces(contact_force);
-  contact.assemble_constraint_rows(
-      displacement,
-      inactive_diagonal,
-      tangent != nullptr && tangent->owns_multiplier_rows() ? &tangent->matrix() : nullptr,
-      constraint_residual);
+  border.scatter_add(border_force, contact_force);
+  contact.assemble_constraint_rows(border.gather(displacement),
+                                   inactive_diagonal,
+                                   tangent != nullptr ? tangent->multiplier_rows() : nullptr,
+                                   constraint_residual);
   if (tangent != nullptr)
   {
     tangent->finish_assembly(inactive_diagonal);
@@ -79,18 +83,14 @@ template <int dim>
 typename DynamicResidual<dim>::Figures
 DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double>& displacement)
 {
-  const types::global_dof_index n_dofs = inertia_force.size();
-  const unsigned int n_pairs           = constraint_residual.size();
-  double force_residual_squared        = 0.;
-  for (types::global_dof_index i = 0; i < n_dofs; ++i)
+  double force_residual_squared = 0.;
+  for (types::global_dof_index i = 0; i < force_residual.size(); ++i)
   {
-    residual_values[i] = is_fixed[i] ? 0.
-                                     : inertia_force[i] + internal_force_values[i] -
-                                           step.external_force[i] - contact_force[i];
-    force_residual_squared += residual_values[i] * residual_values[i];
+    force_residual[i] = is_fixed[i] ? 0.
+                                    : inertia_force[i] + internal_force_values[i] -
+                                          step.external_force[i] - contact_force[i];
+    force_residual_squared += force_residual[i] * force_residual[i];
   }
-  for (unsigned int k = 0; k < n_pairs; ++k)
-    residual_values[n_dofs + k] = constraint_residual[k];
   Figures figures{};
   // The reference force: the elastic, external and contact forces, not the inertia. At time
   // steps far beyond the periods of the small elements of a contact zone their inertia
@@ -103,17 +103,21 @@ DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double
   figures.round_off_floor = roundoff_factor * (largest_tangent_diagonal * displacement.l2_norm() +
                                                inertia_force.l2_norm());
   figures.force_residual  = std::sqrt(force_residual_squared);
-  for (unsigned int k = 0; k < n_pairs; ++k)
-    if (contact.is_active(k))
-      figures.constraint_violation =
-          std::max(figures.constraint_violation, std::abs(constraint_residual[k]));
+  const MultiplierBlock& block = contact.multiplier_block();
+  for (unsigned int k = 0; k < block.n_pairs(); ++k)
+    for (unsigned int c = 0; c < block.n_components(k); ++c)
+      if (contact.is_active(k))
+        figures.constraint_violation = std::max(figures.constraint_violation,
+                                                std::abs(constraint_residual[block.index(k, c)]));
   // The line search's merit: the force residual and the active constraints' violations
   // turned into forces by the stiffness scale; without the latter a step that closes a gap
   // but raises a small nonlinear force residual would be rejected forever.
   double constraint_force_squared = 0.;
-  for (unsigned int k = 0; k < n_pairs; ++k)
-    constraint_force_squared += std::pow(
-        (contact.is_active(k) ? largest_tangent_diagonal : 1.) * constraint_residual[k], 2);
+  for (unsigned int k = 0; k < block.n_pairs(); ++k)
+    for (unsigned int c = 0; c < block.n_components(k); ++c)
+      constraint_force_squared += std::pow((contact.is_active(k) ? largest_tangent_diagonal : 1.) *
+                                               constraint_residual[block.index(k, c)],
+                                           2);
   figures.merit = std::sqrt(force_residual_squared + constraint_force_squared);
   return figures;
 }

@@ -27,7 +27,7 @@ DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,
                                             const bool owns_multiplier_rows)
 {
   const types::global_dof_index n_dofs  = dof_handler.n_dofs();
-  const types::global_dof_index n_total = n_dofs + contact.n_pairs();
+  const types::global_dof_index n_total = n_dofs + contact.multiplier_block().n_multipliers();
   std::vector<types::global_dof_index> local_dofs(dof_handler.get_fe().n_dofs_per_cell());
   IndexSet written_rows(n_total);
   written_rows.add_indices(locally_owned_rows);
@@ -37,8 +37,16 @@ DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,
       cell->get_dof_indices(local_dofs);
       written_rows.add_indices(local_dofs.begin(), local_dofs.end());
     }
+  // The multipliers' rows follow the displacement DoFs: row n_dofs + j for multiplier j.
   DynamicSparsityPattern contact_couplings(n_total);
-  contact.add_to_sparsity(contact_couplings, n_dofs);
+  for (types::global_dof_index row = n_dofs; row < n_total; ++row)
+    contact_couplings.add(row, row);
+  contact.for_each_coupling(
+      [&](const unsigned int multiplier, const types::global_dof_index dof)
+      {
+        contact_couplings.add(n_dofs + multiplier, dof);
+        contact_couplings.add(dof, n_dofs + multiplier);
+      });
   if (owns_multiplier_rows)
     for (types::global_dof_index row = n_dofs; row < n_total; ++row)
       for (auto entry = contact_couplings.begin(row); entry != contact_couplings.end(row); ++entry)
@@ -67,12 +75,12 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
                                           const std::vector<types::global_dof_index>& fixed_dofs,
                                           const DirectSolverPackage package)
     : communicator(dof_handler.get_triangulation().get_communicator()),
-      n_dofs(dof_handler.n_dofs()),
+      n_dofs(dof_handler.n_dofs()), n_multipliers(contact.multiplier_block().n_multipliers()),
       multiplier_rows_owner(Utilities::MPI::this_mpi_process(communicator) ==
                             Utilities::MPI::n_mpi_processes(communicator) - 1),
       locally_owned_dofs(dof_handler.locally_owned_dofs()), direct_solver(package, communicator)
 {
-  const types::global_dof_index n_total = n_dofs + contact.n_pairs();
+  const types::global_dof_index n_total = n_dofs + n_multipliers;
   locally_owned_rows.set_size(n_total);
   locally_owned_rows.add_indices(locally_owned_dofs);
   if (multiplier_rows_owner)
@@ -86,6 +94,49 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
       locally_owned_rows,
       written_rows_pattern(dof_handler, contact, locally_owned_rows, multiplier_rows_owner),
       communicator);
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::add_coupling(const unsigned int multiplier,
+                                          const types::global_dof_index dof,
+                                          const double value)
+{
+  system_matrix.add(n_dofs + multiplier, dof, value);
+  system_matrix.add(dof, n_dofs + multiplier, value);
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::add_diagonal(const unsigned int multiplier, const double value)
+{
+  system_matrix.add(n_dofs + multiplier, n_dofs + multiplier, value);
+}
+
+template <int dim>
+Vector<double> SaddlePointSystem<dim>::stack(const Vector<double>& displacement_rows,
+                                             const Vector<double>& multiplier_rows) const
+{
+  AssertDimension(displacement_rows.size(), n_dofs);
+  AssertDimension(multiplier_rows.size(), n_multipliers);
+  Vector<double> whole(n_dofs + n_multipliers);
+  for (types::global_dof_index i = 0; i < n_dofs; ++i)
+    whole[i] = displacement_rows[i];
+  for (unsigned int j = 0; j < n_multipliers; ++j)
+    whole[n_dofs + j] = multiplier_rows[j];
+  return whole;
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::split(const Vector<double>& whole,
+                                   Vector<double>& displacement_part,
+                                   Vector<double>& multiplier_part) const
+{
+  AssertDimension(whole.size(), n_dofs + n_multipliers);
+  displacement_part.reinit(n_dofs);
+  multiplier_part.reinit(n_multipliers);
+  for (types::global_dof_index i = 0; i < n_dofs; ++i)
+    displacement_part[i] = whole[i];
+  for (unsigned int j = 0; j < n_multipliers; ++j)
+    multiplier_part[j] = whole[n_dofs + j];
 }
 
 template <int dim>

@@ -12,7 +12,9 @@ ImplicitStepper<dim>::ImplicitStepper(const GeneralizedAlpha& integrator,
                                       const ContactDynamics<dim>& dynamics,
                                       ContactNewtonSolver<dim>& solver)
     : integrator(integrator), mass(lumped_mass), is_fixed_dof(is_fixed_dof), loads(loads),
-      contact(contact), dynamics(dynamics), solver(solver)
+      contact(contact), dynamics(dynamics), solver(solver),
+      border_mass(contact.border().gather(lumped_mass)),
+      border_fixed(contact.border().gather(is_fixed_dof))
 {
 }
 
@@ -43,15 +45,21 @@ ImplicitStepper<dim>::solve(const StepState& before, const double time, Vector<d
   increment.reinit(before.displacement.size());
   integrator.predict(before.displacement, before.velocity, before.acceleration, predictor);
   // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).
-  start_acceleration = before.acceleration;
-  const typename ContactDynamics<dim>::StepStart start{before.displacement,
-                                                       before.velocity,
-                                                       before.internal_force,
-                                                       before.external_force,
-                                                       is_fixed_dof};
+  start_acceleration                       = before.acceleration;
+  const ContactBorder<dim>& border         = contact.border();
+  const Vector<double> border_displacement = border.gather(before.displacement),
+                       border_velocity     = border.gather(before.velocity),
+                       border_internal     = border.gather(before.internal_force),
+                       border_external     = border.gather(before.external_force);
+  const typename ContactDynamics<dim>::StepStart start{
+      border_displacement, border_velocity, border_internal, border_external, border_fixed};
+  Vector<double> border_acceleration = border.gather(start_acceleration),
+                 border_predictor    = border.gather(predictor);
   dynamics.adjust_predictor(
-      integrator.rate_map(), contact, mass, start, start_acceleration, predictor);
-  contact.set_reference_gaps(dynamics.reference_gaps(contact, start, predictor));
+      integrator.rate_map(), contact, border_mass, start, border_acceleration, border_predictor);
+  border.scatter(border_acceleration, start_acceleration);
+  border.scatter(border_predictor, predictor);
+  contact.set_reference_gaps(dynamics.reference_gaps(contact, start, border_predictor));
   Vector<double> last_configuration = before.displacement; // as an increment over the predictor
   last_configuration -= predictor;
   current.external_force = loads.force(time);
@@ -82,17 +90,22 @@ void ImplicitStepper<dim>::finish(const StepState& before, const Vector<double>&
   current.displacement += increment;
   integrator.update_rates(
       increment, before.velocity, start_acceleration, current.velocity, current.acceleration);
+  const ContactBorder<dim>& border   = contact.border();
+  Vector<double> border_velocity     = border.gather(current.velocity),
+                 border_acceleration = border.gather(current.acceleration);
   dynamics.correct_rates(integrator.rate_map(),
                          contact,
-                         mass,
-                         {before.displacement,
-                          before.velocity,
-                          start_acceleration,
-                          current.displacement,
-                          increment,
-                          is_fixed_dof},
-                         current.velocity,
-                         current.acceleration);
+                         border_mass,
+                         {border.gather(before.displacement),
+                          border.gather(before.velocity),
+                          border.gather(start_acceleration),
+                          border.gather(current.displacement),
+                          border.gather(increment),
+                          border_fixed},
+                         border_velocity,
+                         border_acceleration);
+  border.scatter(border_velocity, current.velocity);
+  border.scatter(border_acceleration, current.acceleration);
 }
 
 template <int dim>

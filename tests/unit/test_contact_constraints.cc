@@ -1,11 +1,12 @@
 // Unit tests of the contact constraint set apart from any mesh: its saddle-point rows against
 // finite differences of the gap, and the active-set update on a toy set of pairs.
+#include <dyncontact/contact/contact_border.h>
 #include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact/multiplier_block.h>
 #include <dyncontact/contact/penalty_sizing.h>
 #include <dyncontact/postprocess/contact_fields.h>
 
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/lac/full_matrix.h>
 
 #include <gtest/gtest.h>
 
@@ -34,49 +35,131 @@ ContactPair<2> toy_pair(const Node<2>& a,
   pair.penalty_stiffness = 0.;
   return pair;
 }
+
+/** The saddle-point matrix of `n_dofs` DoFs and the multipliers after them, dense. */
+struct DenseRows : MultiplierRows
+{
+  DenseRows(const unsigned int n_dofs, const unsigned int n_multipliers)
+      : n_dofs(n_dofs), matrix(n_dofs + n_multipliers, n_dofs + n_multipliers)
+  {
+  }
+  void add_coupling(const unsigned int multiplier,
+                    const types::global_dof_index dof,
+                    const double value) override
+  {
+    matrix(n_dofs + multiplier, dof) += value;
+    matrix(dof, n_dofs + multiplier) += value;
+  }
+  void add_diagonal(const unsigned int multiplier, const double value) override
+  {
+    matrix(n_dofs + multiplier, n_dofs + multiplier) += value;
+  }
+  unsigned int n_dofs;
+  FullMatrix<double> matrix;
+};
 } // namespace
 
 // The constraint row of an active pair is -dg/du (the symmetric system [K, -G^T; -G, -D] with
 // G = dg/du), its residual -g, and an inactive pair's row is the trivial lambda = 0 with the given
 // diagonal. Reference: central differences of ContactConstraints::gap(), exact for the gap, which
 // is linear in u at fixed normals (bound 1e-10 absolute on coefficients of order 1). An oblique
-// node-to-node pair and an oblique wall pair, at a displacement that leaves them penetrating.
+// node-to-node pair and an oblique wall pair, at a displacement that leaves them penetrating. The
+// three nodes are nodes 3, 1 and 5 of a volume of 6 nodes, so that the rows reach the volume DoFs
+// through the contact border (which numbers them 1, 3, 5) and no other.
 TEST(ContactConstraints, RowsAreMinusTheGapGradient)
 {
   const Tensor<1, 2> n1({0.6, 0.8}), n2({-0.28, 0.96});
-  const Node<2> a = toy_node(0, Point<2>(0., 0.)), b = toy_node(1, Point<2>(0.3, 0.4));
-  const Node<2> c = toy_node(2, Point<2>(2., 1.));
+  const Node<2> a = toy_node(3, Point<2>(0., 0.)), b = toy_node(1, Point<2>(0.3, 0.4));
+  const Node<2> c = toy_node(5, Point<2>(2., 1.));
   ContactConstraints<2> contact({toy_pair(a, b, n1), toy_pair(c, {}, n2, Point<2>(1.9, 1.5))},
                                 ContactFormulation::lagrange_multiplier);
-  const unsigned int n_dofs = 6;
+  const ContactBorder<2>& border = contact.border();
+  ASSERT_EQ(border.n_nodes(), 3u);
+  EXPECT_EQ(border.volume_node(0).dofs[0], 2u);
+  EXPECT_EQ(border.volume_node(2).dofs[1], 11u);
+  const unsigned int n_dofs = 12;
   Vector<double> u(n_dofs);
-  u[0] = 0.5, u[1] = 0.6, u[4] = 0.3, u[5] = 0.9; // both pairs penetrate
-  ASSERT_LT(contact.gap(0, u), 0.);
-  ASSERT_LT(contact.gap(1, u), 0.);
+  u[6] = 0.5, u[7] = 0.6, u[10] = 0.3, u[11] = 0.9; // both pairs penetrate
+  const auto gap = [&](const unsigned int k, const Vector<double>& volume)
+  { return contact.gap(k, border.gather(volume)); };
+  ASSERT_LT(gap(0, u), 0.);
+  ASSERT_LT(gap(1, u), 0.);
   contact.update_active_set(u, 1e-12, 0.);
   ASSERT_TRUE(contact.is_active(0) && contact.is_active(1));
 
-  DynamicSparsityPattern pattern(n_dofs + 2);
-  contact.add_to_sparsity(pattern, n_dofs);
-  TrilinosWrappers::SparseMatrix matrix;
-  matrix.reinit(pattern);
+  std::vector<bool> coupled(n_dofs + 2, false);
+  contact.for_each_coupling([&](const unsigned int multiplier, const types::global_dof_index dof)
+                            { coupled[dof] = coupled[n_dofs + multiplier] = true; });
+  DenseRows rows(n_dofs, contact.multiplier_block().n_multipliers());
   Vector<double> residual(2);
-  contact.assemble_constraint_rows(u, 7., &matrix, residual);
-  matrix.compress(VectorOperation::add);
+  contact.assemble_constraint_rows(border.gather(u), 7., &rows, residual);
   for (unsigned int k = 0; k < 2; ++k)
   {
-    EXPECT_NEAR(residual[k], -contact.gap(k, u), 1e-14);
+    EXPECT_NEAR(residual[k], -gap(k, u), 1e-14);
     for (unsigned int dof = 0; dof < n_dofs; ++dof)
     {
       Vector<double> plus = u, minus = u;
       plus[dof] += 1e-3;
       minus[dof] -= 1e-3;
-      const double gradient = (contact.gap(k, plus) - contact.gap(k, minus)) / 2e-3;
-      EXPECT_NEAR(matrix.el(n_dofs + k, dof), -gradient, 1e-10) << "pair " << k << " dof " << dof;
-      EXPECT_NEAR(matrix.el(dof, n_dofs + k), -gradient, 1e-10) << "pair " << k << " dof " << dof;
+      const double gradient = (gap(k, plus) - gap(k, minus)) / 2e-3;
+      EXPECT_NEAR(rows.matrix(n_dofs + k, dof), -gradient, 1e-10) << "pair " << k << " dof " << dof;
+      EXPECT_NEAR(rows.matrix(dof, n_dofs + k), -gradient, 1e-10) << "pair " << k << " dof " << dof;
+      if (gradient != 0.)
+      {
+        EXPECT_TRUE(coupled[dof]) << "the pattern misses dof " << dof;
+      }
     }
-    EXPECT_EQ(matrix.el(n_dofs + k, n_dofs + k), 0.); // Lagrange multipliers: no compliance
+    EXPECT_EQ(rows.matrix(n_dofs + k, n_dofs + k), 0.); // Lagrange multipliers: no compliance
   }
+  // Nothing couples to the DoFs of the three nodes that are in no pair.
+  for (const unsigned int dof : {0u, 1u, 4u, 5u, 8u, 9u})
+    EXPECT_FALSE(coupled[dof]) << "dof " << dof;
+}
+
+// The contact forces G^T lambda of the border reach the volume at the pairs' nodes only, and
+// balance: a node pair with multiplier 2 along n = (0.6, 0.8) pushes its slave node (volume node
+// 4) by -2 n and its master node (volume node 2) by +2 n; the wall pair on volume node 0 by -3 n2.
+// Exact in binary up to one rounding of each product (bound 1e-15).
+TEST(ContactBorder, ContactForcesScatterToTheVolumeNodesOfThePairs)
+{
+  const Tensor<1, 2> n1({0.6, 0.8}), n2({0., 1.});
+  ContactConstraints<2> contact(
+      {toy_pair(toy_node(4, Point<2>(0., 0.)), toy_node(2, Point<2>(0., 1.)), n1),
+       toy_pair(toy_node(0, Point<2>(1., 0.)), {}, n2, Point<2>(1., -1.))},
+      ContactFormulation::lagrange_multiplier);
+  Vector<double> penetrating(10);
+  penetrating[9] = 2.; // the wall pair penetrates at rest
+  contact.update_active_set(penetrating, 1e-12, 0.);
+  Vector<double> multipliers(2);
+  multipliers[0] = 2., multipliers[1] = 3.;
+  contact.add_multiplier_increment(multipliers);
+  Vector<double> border_force(contact.border().n_dofs()), force(10);
+  contact.add_contact_forces(border_force);
+  contact.border().scatter_add(border_force, force);
+  const std::vector<double> expected = {0., -3., 0., 0., 1.2, 1.6, 0., 0., -1.2, -1.6};
+  for (unsigned int i = 0; i < 10; ++i)
+    EXPECT_NEAR(force[i], expected[i], 1e-15) << "dof " << i;
+  // gather() then scatter() gives the volume vector back at the contact nodes, untouched elsewhere.
+  Vector<double> volume(10);
+  for (unsigned int i = 0; i < 10; ++i)
+    volume[i] = i + 0.5;
+  Vector<double> copy(10);
+  contact.border().scatter(contact.border().gather(volume), copy);
+  for (unsigned int i = 0; i < 10; ++i)
+    EXPECT_EQ(copy[i], (i == 2 || i == 3 || i == 6 || i == 7) ? 0. : volume[i]) << "dof " << i;
+}
+
+// The multiplier block's layout: consecutive multipliers per pair, as many as each pair declares
+// (1 for a normal constraint, dim for a pair with tangential constraints).
+TEST(MultiplierBlock, PairsOwnConsecutiveMultipliers)
+{
+  const MultiplierBlock block({1, 2, 1});
+  EXPECT_EQ(block.n_pairs(), 3u);
+  EXPECT_EQ(block.n_multipliers(), 4u);
+  EXPECT_EQ(block.n_components(1), 2u);
+  EXPECT_EQ(block.index(1, 1), 2u);
+  EXPECT_EQ(block.index(2), 3u);
+  EXPECT_THROW(MultiplierBlock({1, 0}), ExceptionBase);
 }
 
 // The active set on a toy set of four wall pairs in 1D terms (normal +y, gaps set by u): a pair

@@ -20,7 +20,9 @@ namespace
  * One step of two point masses (or one against a wall) meeting along `normal`: the old state, the
  * converged new displacement with the pair closed, the predictor increment and the classical
  * rates. In 2D the tangential components differ between the nodes, which the correction must
- * keep.
+ * keep. Both nodes are contact nodes with the DoFs 0 .. 2 dim - 1, so these vectors are the
+ * contact border's (ContactBorder numbers its nodes by their first DoF) and the treatments, which
+ * work on border vectors, take them as they are.
  */
 template <int dim>
 struct TwoMassStep
@@ -348,7 +350,8 @@ TEST(ContactDynamics, PersistencyTurnsThePairsPredictedToCloseIntoGapRateConstra
 // correction would reopen the first pair's jump when correcting the second) and conserve linear
 // momentum: sum_j m_j (corrected - classical) = 0 per component, since each pair's coefficients
 // sum to zero. Bounds: 1e-12 relative to the rates' scale (order 10), a few roundings of a 2 x 2
-// solve and of sums over five nodes.
+// solve and of sums over five nodes. Every node is a contact node with DoFs 0 .. 9, so the vectors
+// are the contact border's as they are.
 TEST(ContactDynamics, TaylorPapadopoulosClosesPairsSharingAMasterFace)
 {
   constexpr unsigned int n_nodes = 5; // masters 0, 1, 2; slaves 3, 4

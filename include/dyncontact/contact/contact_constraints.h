@@ -1,13 +1,13 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_border.h>
 #include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact/contact_pair.h>
 #include <dyncontact/contact/contact_parameters.h>
+#include <dyncontact/contact/multiplier_block.h>
 #include <dyncontact/discretization/node_index.h>
 
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
-#include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
 #include <vector>
@@ -20,13 +20,19 @@ namespace dyncontact
  * saddle-point system. The treatment of the contact nodes' rates (the paper's modified Newmark)
  * is a ContactDynamics, which reads the pairs from here.
  *
- * Every candidate owns one multiplier unknown, so the sparsity pattern never changes; an inactive
- * pair gets the trivial row lambda = 0. The Lagrange multiplier formulation enforces g = 0 on the
- * active pairs; the penalty formulation is the same system with -1/eps on the multiplier
- * diagonal (lambda = -eps g, i.e. the classical penalty force eps <-g>). Active set: a pair enters
- * when it penetrates and leaves when its multiplier turns tensile (Hughes et al. 1976) and, on a
- * surface with Lagrange multipliers, the contact pressure at its node is not compressive either
- * (see update_active_set()).
+ * The pairs live on the contact border (ContactBorder, border()): their nodes are the border's
+ * nodes, whose DoFs index border vectors, and every pair-level query (gap(), the contact forces,
+ * the constraint rows) takes border vectors. The configuration updates (update_geometry(),
+ * update_master_points(), update_active_set(), contact_pressures()) take the volume displacement,
+ * which the contact geometry's surfaces are evaluated at.
+ *
+ * Every candidate owns its multipliers (multiplier_block(): one per pair, the normal constraint),
+ * so the sparsity pattern never changes; an inactive pair gets the trivial row lambda = 0. The
+ * Lagrange multiplier formulation enforces g = 0 on the active pairs; the penalty formulation is
+ * the same system with -1/eps on the multiplier diagonal (lambda = -eps g, i.e. the classical
+ * penalty force eps <-g>). Active set: a pair enters when it penetrates and leaves when its
+ * multiplier turns tensile (Hughes et al. 1976) and, on a surface with Lagrange multipliers, the
+ * contact pressure at its node is not compressive either (see update_active_set()).
  *
  * Normals are fixed unless the pairs come from a ContactGeometry (NodeToNodeContact): then
  * update_geometry() moves them (normals and, for node-to-segment pairs, master points) to a
@@ -41,30 +47,38 @@ template <int dim>
 class ContactConstraints
 {
 public:
-  /** Pairs with fixed normals (bars, a rigid wall). */
+  /**
+   * Pairs with fixed normals (bars, a rigid wall), their nodes given in the volume numbering; the
+   * border is their nodes.
+   */
   ContactConstraints(std::vector<ContactPair<dim>> pairs, ContactFormulation formulation);
 
   /**
-   * The pairs of `geometry`, which follow the current configuration (update_geometry()). The
-   * geometry must have at least one pair and finite normals (its constructor's InputError sees to
-   * it; AssertThrow otherwise).
+   * The pairs of `geometry`, which follow the current configuration (update_geometry()); the
+   * border is every node a pair may couple (ContactGeometry::coupled_nodes()). The geometry must
+   * have at least one pair and finite normals (its constructor's InputError sees to it;
+   * AssertThrow otherwise).
    */
   ContactConstraints(const ContactGeometry<dim>& geometry, ContactFormulation formulation);
 
   /**
-   * For pairs of a ContactGeometry: moves every pair to `displacement`
-   * (ContactGeometry::update_pairs()). Does nothing for fixed pairs.
+   * For pairs of a ContactGeometry: moves every pair to `displacement` (a volume vector;
+   * ContactGeometry::update_pairs()). Does nothing for fixed pairs.
    */
   void update_geometry(const Vector<double>& displacement);
 
   /**
-   * For pairs of a ContactGeometry: moves every pair's master point to `displacement`, its normal
-   * kept (ContactGeometry::update_master_points(); the Newton solver calls it at every iterate).
-   * Does nothing for fixed pairs.
+   * For pairs of a ContactGeometry: moves every pair's master point to `displacement` (a volume
+   * vector), its normal kept (ContactGeometry::update_master_points(); the Newton solver calls it
+   * at every iterate). Does nothing for fixed pairs.
    */
   void update_master_points(const Vector<double>& displacement);
 
   unsigned int n_pairs() const { return pairs.size(); }
+  /** The contact nodes the pairs live on. */
+  const ContactBorder<dim>& border() const { return contact_border; }
+  /** The layout of the pairs' multipliers. */
+  const MultiplierBlock& multiplier_block() const { return block; }
   ContactFormulation contact_formulation() const { return formulation; }
 
   /** Multiplies every pair's penalty stiffness by `factor` > 0 (automatic penalty sizing). */
@@ -83,6 +97,7 @@ public:
   void set_force_per_multiplier(double factor);
   /** The factor of set_force_per_multiplier() (1 until set). */
   double force_per_multiplier() const { return force_factor; }
+  /** The candidate pairs, their nodes on the border (node(), border DoFs). */
   const std::vector<ContactPair<dim>>& candidate_pairs() const { return pairs; }
   unsigned int n_active() const;
   bool is_active(unsigned int pair) const { return active[pair]; }
@@ -100,7 +115,7 @@ public:
     multiplier_values = saved.multipliers;
   }
 
-  /** Gap of candidate `pair` at displacement u (negative = penetration). */
+  /** Gap of candidate `pair` at the border displacement u (negative = penetration) [length]. */
   double gap(unsigned int pair, const Vector<double>& displacement) const;
 
   /**
@@ -112,43 +127,52 @@ public:
    */
   void set_reference_gaps(std::vector<double> reference);
 
-  /** Couples row/column n_dofs + k of candidate k with the DoFs of its nodes. */
-  void add_to_sparsity(DynamicSparsityPattern& sparsity, types::global_dof_index n_dofs) const;
-
   /**
-   * The DoFs any candidate pair can couple during the run (those of add_to_sparsity(): with a
-   * contact geometry every node of the contact surfaces a pair may project on), as n_dofs flags.
+   * Calls f(multiplier, dof) for every volume DoF the multipliers of a candidate pair can couple
+   * to during the run (with a contact geometry every node of the contact surfaces a pair may
+   * project on): the pattern of the constraint rows, besides each multiplier's diagonal.
    */
+  template <typename Function>
+  void for_each_coupling(const Function& f) const
+  {
+    for (unsigned int k = 0; k < pairs.size(); ++k)
+      for (const unsigned int node : coupled_nodes[k])
+        for (unsigned int d = 0; d < dim; ++d)
+          for (unsigned int c = 0; c < block.n_components(k); ++c)
+            f(block.index(k, c), contact_border.volume_node(node).dofs[d]);
+  }
+
+  /** The volume DoFs of the contact nodes (for_each_coupling()), as `n_dofs` flags. */
   std::vector<bool> contact_dofs(types::global_dof_index n_dofs) const;
 
-  /** Adds the contact forces G^T lambda on the bodies to `force` (length n_dofs). */
+  /** Adds the contact forces G^T lambda on the bodies to the border vector `force`. */
   void add_contact_forces(Vector<double>& force) const;
 
   /**
-   * Writes the constraint rows of the Newton system into `matrix` (rows and columns n_dofs + k,
-   * symmetric) and their residuals into `constraint_residual` (length n_pairs): -g (Lagrange) or
-   * -g - lambda/eps (penalty) for active pairs, lambda for inactive ones with diagonal
-   * `inactive_diagonal`; a penalty pair's row is -g - f lambda / eps, f the force per multiplier,
-   * so that its force f lambda is eps <-g>. The update is (delta u, delta lambda) = matrix^{-1}
-   * (-residual). A null `matrix` computes the residuals only (ranks that do not own the constraint
-   * rows).
+   * Writes the constraint rows of the Newton system into `rows` (symmetric) and their residuals
+   * into `constraint_residual` (one per multiplier) at the border displacement `displacement`: -g
+   * (Lagrange) or -g - lambda/eps (penalty) for active pairs, lambda for inactive ones with
+   * diagonal `inactive_diagonal`; a penalty pair's row is -g - f lambda / eps, f the force per
+   * multiplier, so that its force f lambda is eps <-g>. The update is (delta u, delta lambda) =
+   * matrix^{-1} (-residual). A null `rows` computes the residuals only (ranks that do not own
+   * the constraint rows).
    */
   void assemble_constraint_rows(const Vector<double>& displacement,
                                 double inactive_diagonal,
-                                TrilinosWrappers::SparseMatrix* matrix,
+                                MultiplierRows* rows,
                                 Vector<double>& constraint_residual) const;
 
-  /** Adds a Newton increment of the multipliers. */
+  /** Adds a Newton increment of the multipliers (one entry per multiplier, MultiplierBlock). */
   void add_multiplier_increment(const Vector<double>& increment);
 
   /**
-   * Updates the active set at displacement u: inactive pairs with g < -gap_tolerance enter,
-   * active pairs with lambda < -force_tolerance leave (their multiplier is reset to zero), except,
-   * for surface pairs with Lagrange multipliers, those whose contact pressure (contact_pressures())
-   * is still compressive:
-   * a node whose consistent share of a compressive pressure is zero or negative (the axis node of
-   * an axisymmetric Q2 surface has zero tributary area) may carry a slightly tensile multiplier
-   * while its surroundings are pressed together. Returns whether anything changed.
+   * Updates the active set at the volume displacement u: inactive pairs with g < -gap_tolerance
+   * enter, active pairs with lambda < -force_tolerance leave (their multiplier is reset to zero),
+   * except, for surface pairs with Lagrange multipliers, those whose contact pressure
+   * (contact_pressures()) is still compressive: a node whose consistent share of a compressive
+   * pressure is zero or negative (the axis node of an axisymmetric Q2 surface has zero tributary
+   * area) may carry a slightly tensile multiplier while its surroundings are pressed together.
+   * Returns whether anything changed.
    */
   bool update_active_set(const Vector<double>& displacement,
                          double gap_tolerance,
@@ -160,12 +184,13 @@ public:
    */
   double pair_force(unsigned int pair) const
   {
-    return active[pair] ? force_factor * multiplier_values[pair] : 0.;
+    return active[pair] ? force_factor * multiplier_values[block.index(pair)] : 0.;
   }
 
   /**
    * The contact pressure at every pair [force/area] (see ContactGeometry::contact_pressures()) at
-   * `displacement` from the pair forces (pair_force()); empty for pairs with fixed normals.
+   * the volume displacement `displacement` from the pair forces (pair_force()); empty for pairs
+   * with fixed normals.
    */
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
@@ -173,11 +198,20 @@ private:
   /** g_k(u) - reference_k: what the solve constrains (see set_reference_gaps()). */
   double constraint_gap(unsigned int pair, const Vector<double>& displacement) const;
 
-  /** Calls f(dof) for every DoF candidate pair `k` can couple (see contact_dofs()). */
-  template <typename Function>
-  void for_each_coupled_dof(unsigned int k, const Function& f) const;
+  /** Builds the border from `nodes_of_pairs` (per pair, volume nodes) and the border pairs. */
+  void build_border(const std::vector<std::vector<Node<dim>>>& nodes_of_pairs);
 
+  /** `pairs` = `volume_pairs` with their nodes on the border. */
+  void move_pairs_to_border();
+
+  /** The pairs with their nodes in the volume numbering: what the geometry updates. */
+  std::vector<ContactPair<dim>> volume_pairs;
+  /** The same pairs on the border. */
   std::vector<ContactPair<dim>> pairs;
+  ContactBorder<dim> contact_border;
+  /** Per pair: the contact nodes its rows may couple to over the run. */
+  std::vector<std::vector<unsigned int>> coupled_nodes;
+  MultiplierBlock block;
   const ContactGeometry<dim>* geometry = nullptr; ///< null: fixed pairs
   ContactFormulation formulation;
   std::vector<bool> active;

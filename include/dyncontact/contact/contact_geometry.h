@@ -23,8 +23,9 @@ namespace dyncontact
  * 4.1).
  *
  * The number of pairs and each pair's slave node never change; the master nodes, weights and
- * normal may (update_pairs()), within the DoFs coupled_dofs() declares, from which the sparsity
- * pattern of the saddle-point system is built once.
+ * normal may (update_pairs()), within the nodes coupled_nodes() declares, from which the contact
+ * border and the sparsity pattern of the saddle-point system are built once. Its pairs' nodes
+ * carry the volume (DoFHandler) numbering.
  */
 template <int dim>
 class ContactGeometry
@@ -58,10 +59,11 @@ public:
   }
 
   /**
-   * Every DoF the constraint row of pair `k` may couple to over the run (the slave node's and
-   * every master node update_pairs() may choose), sorted and unique.
+   * Every node the constraint row of pair `k` may couple to over the run (the slave node and
+   * every master node update_pairs() may choose; repeats allowed), in the volume numbering: the
+   * pair's part of the contact border (ContactBorder).
    */
-  virtual std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const = 0;
+  virtual std::vector<Node<dim>> coupled_nodes(unsigned int k) const = 0;
 
   /**
    * The contact pressure [force/area] at every pair's slave node, consistent with the nodal

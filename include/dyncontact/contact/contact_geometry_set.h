@@ -25,7 +25,7 @@ public:
                     std::vector<ContactPair<dim>>& pairs) const override;
   void update_master_points(const Vector<double>& displacement,
                             std::vector<ContactPair<dim>>& pairs) const override;
-  std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;
+  std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
   std::vector<double> contact_pressures(const Vector<double>& displacement,
                                         const std::vector<double>& multipliers) const override;
 

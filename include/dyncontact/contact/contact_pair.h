@@ -7,12 +7,11 @@
 #include <deal.II/base/tensor.h>
 #include <deal.II/lac/vector.h>
 
-#include <algorithm>
 #include <vector>
 
 namespace dyncontact
 {
-/** n . f at `node` of a nodal vector field `field` (whole vector over all displacement DoFs). */
+/** n . f at `node` of a nodal vector field `field` (indexed by the node's DoFs). */
 template <int dim>
 double
 normal_component(const Node<dim>& node, const Tensor<1, dim>& normal, const Vector<double>& field)
@@ -48,6 +47,10 @@ struct MasterNode
  * sum_j c_j n . f_j over its nodes with the coefficients c_j = -1 for the slave node and w_i for
  * the master nodes (for_each_node()); sum_j c_j = 0 (for a pair between bodies), so the pair's
  * forces balance and a rigid translation leaves its gap unchanged.
+ *
+ * Its nodes' DoFs index the vectors it is evaluated at: the volume vectors where a contact
+ * geometry builds it, the border vectors (ContactBorder) in the contact layer, which holds its
+ * pairs on the border (ContactConstraints::candidate_pairs()).
  */
 template <int dim>
 struct ContactPair
@@ -59,17 +62,6 @@ struct ContactPair
   double penalty_stiffness; ///< used by the penalty formulation only
 
   bool against_wall() const { return masters.empty(); }
-
-  /** The DoFs of the pair's nodes (slave and masters), sorted and unique. */
-  std::vector<types::global_dof_index> dofs() const
-  {
-    std::vector<types::global_dof_index> pair_dofs;
-    for_each_node([&](const Node<dim>& node, double)
-                  { pair_dofs.insert(pair_dofs.end(), node.dofs.begin(), node.dofs.end()); });
-    std::sort(pair_dofs.begin(), pair_dofs.end());
-    pair_dofs.erase(std::unique(pair_dofs.begin(), pair_dofs.end()), pair_dofs.end());
-    return pair_dofs;
-  }
 
   /** Calls f(node, c) for the slave node (c = -1) and then each master node (c = its weight). */
   template <typename Function>
@@ -86,7 +78,7 @@ struct ContactPair
     return master_side(field, 0.) - normal_component(slave, normal, field);
   }
 
-  /** The gap g = reference_gap() + [[u]] at the displacement `u` (whole vector). */
+  /** The gap g = reference_gap() + [[u]] at the displacement `u` (indexed by the nodes' DoFs). */
   double gap(const Vector<double>& u) const
   {
     // Reference gap plus relative displacement, never absolute positions: translating a problem

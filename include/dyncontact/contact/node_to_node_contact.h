@@ -77,7 +77,7 @@ public:
                     std::vector<ContactPair<dim>>& pairs) const override;
 
   /** The DoFs of the pair's two nodes. */
-  std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;
+  std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
 
   /**
    * The current normal of every pair, in the order of pairs(), at `displacement` (a whole vector

@@ -22,7 +22,7 @@ namespace dyncontact
  * closest point on the curved face, QuadraticFace::closest_point()); its candidate faces are all
  * master faces within that distance. The search radius is thus how far a run can follow a slave
  * node along the master surface (sliding plus approach) before it leaves its candidate faces;
- * the sparsity pattern (coupled_dofs()) is built from them once.
+ * the sparsity pattern (coupled_nodes()) is built from them once.
  *
  * Pair at a displacement u (update_pairs(), and the reference pairs at u = 0): on each candidate
  * face in its current configuration, x(xi) = sum_i N_i(xi) (X_i + u_i), the master point is where
@@ -96,7 +96,7 @@ public:
                             std::vector<ContactPair<dim>>& pairs) const override;
 
   /** The slave node's DoFs and those of every node of the pair's candidate faces. */
-  std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;
+  std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
 
   /** ContactSurface::consistent_pressures() of the slave surface at the pairs' slave nodes. */
   std::vector<double> contact_pressures(const Vector<double>& displacement,

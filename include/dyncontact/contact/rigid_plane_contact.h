@@ -32,7 +32,7 @@ public:
   const std::vector<ContactPair<dim>>& pairs() const override { return candidate_pairs; }
   /** Nothing moves: the plane is fixed and its normal is the pairs' normal. */
   void update_pairs(const Vector<double>&, std::vector<ContactPair<dim>>&) const override {}
-  std::vector<types::global_dof_index> coupled_dofs(unsigned int k) const override;
+  std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
   std::vector<double> contact_pressures(const Vector<double>& displacement,
                                         const std::vector<double>& multipliers) const override;
 

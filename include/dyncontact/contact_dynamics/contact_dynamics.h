@@ -16,9 +16,12 @@ namespace dyncontact
  * How the time integration treats the rates of the contact nodes: the family of fixes for the
  * velocity and acceleration jumps that implicit time stepping produces at contact events
  * (Contact/dynamics). A treatment sees the integrator only through a RateMap and the contact
- * layer only through its active pairs. Adding one is its own file, its enumerator and name in
- * contact_dynamics_kind.h / contact_dynamics_names(), its case in create_contact_dynamics(), and
- * its unit test; nothing else changes (not Simulation, not the parameters).
+ * layer only through its active pairs; every vector it gets is a border vector (ContactBorder: dim
+ * entries per contact node, the DoFs the pairs' nodes carry), gathered from the volume by the
+ * stepper, which writes back what the treatment changes. Adding one is its own file, its enumerator
+ * and name in contact_dynamics_kind.h / contact_dynamics_names(), its case in
+ * create_contact_dynamics(), and its unit test; nothing else changes (not Simulation, not the
+ * parameters).
  */
 template <int dim>
 class ContactDynamics
@@ -39,7 +42,7 @@ public:
    */
   virtual double contact_force_factor(const RateMap& /*rates*/) const { return 1.; }
 
-  /** The state at t_n a treatment may start a step from (whole vectors over the DoFs). */
+  /** The state at t_n a treatment may start a step from (border vectors). */
   struct StepStart
   {
     const Vector<double>& displacement;   ///< u_n [length]
@@ -81,8 +84,7 @@ public:
   /**
    * After a converged step (classical rates v_new, a_new at every DoF, from the increment of
    * `step`): may correct the rates of the DoFs of the active pairs of `contact`. `lumped_mass` is
-   * per DoF [mass]; all vectors are whole over the displacement DoFs. Keeps the classical rates by
-   * default.
+   * per DoF [mass]; all vectors are border vectors. Keeps the classical rates by default.
    */
   virtual void correct_rates(const RateMap& /*rates*/,
                              const ContactConstraints<dim>& /*contact*/,

@@ -46,7 +46,7 @@ public:
 
 protected:
   /**
-   * A shift added to the predictor (whole vector over the DoFs, zero at fixed DoFs), computed
+   * A shift added to the predictor (a border vector, zero at fixed DoFs), computed
    * from the state at t_n; an empty vector (the default) shifts nothing.
    */
   virtual Vector<double> predictor_shift(const RateMap& rates,

@@ -17,7 +17,8 @@ namespace dyncontact
  * jumps across the active pairs, the penetration, the contact radius, the event work of a step,
  * the nodal contact traction and the pressure samples of the contact surfaces. Reads the
  * ContactConstraints' pairs, active set, pair forces and gaps (which must outlive it); nothing
- * here feeds the solve. Vectors are over the displacement DoFs.
+ * here feeds the solve. Vectors passed in and out are volume vectors (over the displacement
+ * DoFs); each query gathers what it reads onto the contact border (ContactBorder).
  */
 template <int dim>
 class ContactFields

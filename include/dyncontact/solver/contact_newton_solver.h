@@ -112,10 +112,10 @@ public:
   const Vector<double>& internal_force() const { return residual.internal_force(); }
 
   /**
-   * The last evaluated residual (the converged one after solve): n_dofs force rows
-   * c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs), then one row per pair.
+   * The force rows of the last evaluated residual (the converged one after solve), n_dofs
+   * entries: c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs).
    */
-  const Vector<double>& last_residual() const { return residual.residual(); }
+  const Vector<double>& last_residual() const { return residual.force_rows(); }
 
   /**
    * max diag(K_eff) of the last tangent (0: none yet), which scales the round-off floor and decides
@@ -192,7 +192,6 @@ private:
   const double gap_tolerance;
   TimerOutput& timer;
   const double alpha_f;
-  const types::global_dof_index n_dofs;
   SaddlePointSystem<dim> system;
   DynamicResidual<dim> residual;
 };

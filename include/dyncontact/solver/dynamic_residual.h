@@ -18,8 +18,8 @@ namespace dyncontact
  *
  *   r = [ c M (u - u~) + Q(u) - W - G^T lambda ;  constraint rows of ContactConstraints ]
  *
- * (n_dofs force rows, zero at fixed DoFs, then one row per candidate pair), with c = 1/(beta dt^2),
- * M the lumped mass, Q(u) the internal force of the ElasticBodies, W the external force and
+ * (n_dofs force rows, zero at fixed DoFs, and one constraint row per multiplier), with c = 1/(beta
+ * dt^2), M the lumped mass, Q(u) the internal force of the ElasticBodies, W the external force and
  * G^T lambda the contact force of the multipliers the contact layer holds. The tangent, if asked
  * for, is the symmetric saddle-point matrix [K_eff, -G^T; -G, -D] with K_eff = c M + dQ/du,
  * assembled into a SaddlePointSystem, whose fixed rows get the inactive pairs' diagonal c mean(M).
@@ -89,8 +89,8 @@ public:
    * Evaluates the residual at `displacement` = step.predictor + `increment` (both n_dofs
    * entries) with the multipliers and active set the contact layer holds, and, if `tangent` is
    * not null, assembles the tangent into it (zeroed first) and records max diag(K_eff) as the
-   * tangent scale. The residual is then available from residual(). Without a tangent the figures
-   * use the tangent scale of the last assembly (tangent_scale()).
+   * tangent scale. The residual is then available from force_rows() and constraint_rows(). Without
+   * a tangent the figures use the tangent scale of the last assembly (tangent_scale()).
    *
    * Throws the SolverFailure of ElasticBodies::assemble_internal_force() (an inverted element) as
    * it is, after flushing the entries assembled so far (collectively); the residual, internal
@@ -101,8 +101,11 @@ public:
                    const Vector<double>& displacement,
                    SaddlePointSystem<dim>* tangent);
 
-  /** The residual of the last evaluation: n_dofs force rows, then n_pairs constraint rows. */
-  const Vector<double>& residual() const { return residual_values; }
+  /** The force rows of the last evaluation's residual (n_dofs entries, zero at fixed DoFs). */
+  const Vector<double>& force_rows() const { return force_residual; }
+
+  /** The constraint rows of the last evaluation's residual (one per multiplier). */
+  const Vector<double>& constraint_rows() const { return constraint_residual; }
 
   /** Q(u) at the displacement of the last evaluation [force], n_dofs entries. */
   const Vector<double>& internal_force() const { return internal_force_values; }
@@ -138,7 +141,7 @@ private:
   Vector<double> inertia_force;
   Vector<double> contact_force;
   Vector<double> constraint_residual;
-  Vector<double> residual_values;
+  Vector<double> force_residual;
   double largest_tangent_diagonal = 0.;
   double strain_energy_value      = 0.;
 };

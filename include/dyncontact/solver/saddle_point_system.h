@@ -2,6 +2,7 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/contact/contact_constraints.h>
+#include <dyncontact/contact/multiplier_block.h>
 #include <dyncontact/solver/direct_solver.h>
 #include <dyncontact/solver/low_rank_update.h>
 
@@ -18,17 +19,20 @@ namespace dyncontact
 {
 /**
  * The linear system of one Newton iteration of a contact step: the symmetric saddle-point matrix
- * [K_eff, -G^T; -G, -D] of size (n_dofs + n_pairs)^2, unknowns ordered as the n_dofs displacement
- * DoFs of the DoFHandler followed by one multiplier per candidate contact pair (row n_dofs + k for
- * pair k), and its direct solve.
+ * [K_eff, -G^T; -G, -D] of size (n_dofs + n_multipliers)^2, unknowns ordered as the n_dofs
+ * displacement DoFs of the DoFHandler followed by the contact multipliers (MultiplierBlock; row
+ * n_dofs + j for multiplier j), and its direct solve. It is the one place that knows where the
+ * multipliers sit: the contact layer writes its rows by multiplier (MultiplierRows), and
+ * stack() and split() join and part vectors over all unknowns.
  *
  * The sparsity pattern is fixed at construction and never changes: the couplings of the
- * DoFHandler's cells plus those the contact layer declares (ContactConstraints::add_to_sparsity(),
- * every candidate pair, active or not). Parallel layout: rows are distributed like the DoFs, the
- * multiplier rows belong to the last MPI rank; each rank's pattern holds the full rows it writes
- * (those of its locally owned cells and, on the last rank, the constraint rows and the DoFs they
- * couple to); entries in rows owned elsewhere are sent on finish_assembly(). Vectors passed in and
- * out are whole (all n_dofs + n_pairs entries) on every rank.
+ * DoFHandler's cells plus those the contact layer declares
+ * (ContactConstraints::for_each_coupling(), every candidate pair, active or not) and each
+ * multiplier's diagonal. Parallel layout: rows are distributed like the DoFs, the multiplier rows
+ * belong to the last MPI rank; each rank's pattern holds the full rows it writes (those of its
+ * locally owned cells and, on the last rank, the constraint rows and the DoFs they couple to);
+ * entries in rows owned elsewhere are sent on finish_assembly(). Vectors passed in and out are
+ * whole (all n_dofs + n_multipliers entries) on every rank.
  *
  * The direct solve keeps its factorization (DirectSolver, symbolic analysis once for the fixed
  * pattern); update_factorization() brings it up to date with the assembled matrix at the least
@@ -48,7 +52,7 @@ namespace dyncontact
  * (DynamicResidual); it knows neither the bodies nor Newton's method.
  */
 template <int dim>
-class SaddlePointSystem
+class SaddlePointSystem : public MultiplierRows
 {
 public:
   /** The distributed matrix type (Epetra, through deal.II's wrapper). */
@@ -56,26 +60,47 @@ public:
 
   /**
    * Builds the pattern and the distributed matrix (all entries zero) for the DoFs of
-   * `dof_handler` and the candidate pairs of `contact` (the number of pairs is fixed from here
-   * on). `fixed_dofs` are DoF indices < n_dofs whose rows finish_assembly() replaces. The
-   * communicator is the triangulation's.
+   * `dof_handler` and the multipliers of `contact` (their number is fixed from here on).
+   * `fixed_dofs` are DoF indices < n_dofs whose rows finish_assembly() replaces. The communicator
+   * is the triangulation's.
    */
   SaddlePointSystem(const DoFHandler<dim>& dof_handler,
                     const ContactConstraints<dim>& contact,
                     const std::vector<types::global_dof_index>& fixed_dofs,
                     DirectSolverPackage package);
 
-  /** The matrix, for adding entries of the leading block and the constraint rows. */
+  /** The matrix, for adding entries of the leading block (displacement rows and columns). */
   Matrix& matrix() { return system_matrix; }
 
-  /** Whether this rank owns the multiplier rows (the last rank): only it writes them. */
-  bool owns_multiplier_rows() const { return multiplier_rows_owner; }
+  /**
+   * Where the contact layer writes the constraint rows (add_coupling(), add_diagonal()): this
+   * system on the rank that owns the multiplier rows (the last rank), null elsewhere.
+   */
+  MultiplierRows* multiplier_rows() { return multiplier_rows_owner ? this : nullptr; }
 
-  /** Whether `row` (< n_dofs + n_pairs) is one of this rank's rows. */
+  /** Adds `value` at (row of `multiplier`, `dof`) and (`dof`, its column). */
+  void add_coupling(unsigned int multiplier, types::global_dof_index dof, double value) override;
+
+  /** Adds `value` on the diagonal of `multiplier`'s row. */
+  void add_diagonal(unsigned int multiplier, double value) override;
+
+  /** Whether `row` (< n_dofs + n_multipliers) is one of this rank's rows. */
   bool owns_row(const types::global_dof_index row) const
   {
     return locally_owned_rows.is_element(row);
   }
+
+  /**
+   * The vector over all unknowns of `displacement_rows` (n_dofs entries) followed by
+   * `multiplier_rows` (n_multipliers entries).
+   */
+  Vector<double> stack(const Vector<double>& displacement_rows,
+                       const Vector<double>& multiplier_rows) const;
+
+  /** The parts of `whole` (over all unknowns) that stack() joins. */
+  void split(const Vector<double>& whole,
+             Vector<double>& displacement_part,
+             Vector<double>& multiplier_part) const;
 
   /** Sets every entry to zero before an assembly (the pattern stays). */
   void start_assembly();
@@ -126,8 +151,9 @@ public:
 
   /**
    * Solves matrix * solution = right_hand_side with the solver of the last update_factorization()
-   * (which must have been called since the last assembly); both vectors have n_dofs + n_pairs
-   * entries and are whole on every rank. Throws SolverFailure if the solve fails.
+   * (which must have been called since the last assembly); both vectors have
+   * n_dofs + n_multipliers entries and are whole on every rank. Throws SolverFailure if the solve
+   * fails.
    */
   Vector<double> solve(const Vector<double>& right_hand_side);
 
@@ -152,6 +178,7 @@ private:
 
   const MPI_Comm communicator;
   const types::global_dof_index n_dofs;
+  const unsigned int n_multipliers;
   const bool multiplier_rows_owner;
   /** The locally owned DoFs of the DoFHandler (the displacement rows of this rank). */
   const IndexSet locally_owned_dofs;

@@ -24,8 +24,10 @@ namespace dyncontact
  *    Newton solve of the balance (at t_{n+1}, or at t_{n+1-alpha_f} for a dissipative member);
  *  - finish(): u_{n+1} = predictor + increment, the integrator's rates (eq. 12) and the
  *    treatment's rate correction (eqs. 19-24 for the paper's scheme).
- * It owns the current StepState; the integrator, lumped mass, fixed DoFs, loads, contact, its
- * treatment and the Newton solver are the caller's and must outlive it.
+ * The treatment sees the contact nodes only: the stepper gathers the states it reads onto the
+ * contact border (ContactBorder) and writes back what it changes. It owns the current StepState;
+ * the integrator, lumped mass, fixed DoFs, loads, contact, its treatment and the Newton solver are
+ * the caller's and must outlive it.
  */
 template <int dim>
 class ImplicitStepper
@@ -82,6 +84,9 @@ private:
   ContactConstraints<dim>& contact;
   const ContactDynamics<dim>& dynamics;
   ContactNewtonSolver<dim>& solver;
+  /** The lumped mass and fixed flags of the contact nodes (border vectors). */
+  const Vector<double> border_mass;
+  const std::vector<bool> border_fixed;
   StepState current;
   /** The step's predictor, and the acceleration at t_n it used (a treatment may replace a_n). */
   Vector<double> predictor, start_acceleration;

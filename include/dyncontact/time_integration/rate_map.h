@@ -50,7 +50,8 @@ struct RateMap
 
 /**
  * The states of one completed step, t_n -> t_{n+1}, before the rates at t_{n+1} are corrected:
- * what a contact-dynamics treatment reads. Whole vectors over all displacement DoFs.
+ * what a contact-dynamics treatment reads, over the DoFs it works on (the contact border's in a
+ * run, ContactDynamics).
  */
 struct StepStates
 {

@@ -1,0 +1,79 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/discretization/node_index.h>
+
+#include <deal.II/lac/vector.h>
+
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * The contact border: every node a contact pair may couple (the contact nodes), numbered
+ * 0 .. n_nodes() - 1 in the order of their first DoF in the volume (the DoFHandler's numbering),
+ * and the vectors over them. A border vector holds dim entries per contact node, entry
+ * dim i + d for component d of node i (the border DoFs); a volume vector is a whole vector over
+ * the displacement DoFs. The contact layer (pairs, constraints, rate treatments, contact fields)
+ * works on border vectors only: gather() copies the contact nodes' entries of a volume vector
+ * (u, v, a, masses, fixed flags) into one, scatter_add() adds a border vector (the contact forces
+ * G^T lambda) into a volume vector, scatter() writes one back (corrected rates). The copies are
+ * exact, so a computation on border vectors gives the same bits as on the volume.
+ *
+ * The border's own nodes (node()) carry the border DoFs in Node::dofs, with the position and body
+ * of the volume node (volume_node()) they stand for.
+ */
+template <int dim>
+class ContactBorder
+{
+public:
+  /** An empty border (no contact nodes). */
+  ContactBorder() = default;
+
+  /**
+   * The border of the volume nodes `nodes` (repeats allowed: each node once, identified by its
+   * first DoF).
+   */
+  explicit ContactBorder(const std::vector<Node<dim>>& nodes);
+
+  /** The number of contact nodes. */
+  unsigned int n_nodes() const { return volume_nodes.size(); }
+
+  /** The size of a border vector: dim n_nodes(). */
+  unsigned int n_dofs() const { return dim * volume_nodes.size(); }
+
+  /** Contact node `i` (< n_nodes()) with its border DoFs dim i + d. */
+  const Node<dim>& node(const unsigned int i) const { return border_nodes[i]; }
+
+  /** The volume node contact node `i` stands for (its DoFs in the volume numbering). */
+  const Node<dim>& volume_node(const unsigned int i) const { return volume_nodes[i]; }
+
+  /** The volume DoF of border DoF `border_dof` (< n_dofs()). */
+  types::global_dof_index volume_dof(const unsigned int border_dof) const
+  {
+    return volume_nodes[border_dof / dim].dofs[border_dof % dim];
+  }
+
+  /**
+   * The contact node of the volume node `node`, as a border node (node()). Throws
+   * std::out_of_range if `node` is not a contact node.
+   */
+  const Node<dim>& border_node(const Node<dim>& node) const;
+
+  /** The contact nodes' entries of the volume vector `volume` (a border vector). */
+  Vector<double> gather(const Vector<double>& volume) const;
+
+  /** The contact nodes' entries of the per-DoF flags `volume` (one per border DoF). */
+  std::vector<bool> gather(const std::vector<bool>& volume) const;
+
+  /** Adds the border vector `border` into the contact nodes' entries of `volume`. */
+  void scatter_add(const Vector<double>& border, Vector<double>& volume) const;
+
+  /** Writes the border vector `border` into the contact nodes' entries of `volume`. */
+  void scatter(const Vector<double>& border, Vector<double>& volume) const;
+
+private:
+  std::vector<Node<dim>> volume_nodes; ///< sorted by first DoF
+  std::vector<Node<dim>> border_nodes; ///< the same nodes with border DoFs
+};
+} // namespace dyncontact
