@@ -7,7 +7,9 @@ newton_iterations, max |a - b| <= TOLERANCE * max |a| over that column; prints t
 Columns that are round-off or tolerance-level by nature are scaled by the quantity they measure
 instead of by themselves (SCALE_COLUMN): the force imbalance by the contact force, the
 penetration by the displacement of the contact pole, the normal velocity and acceleration jumps
-by the pole's velocity and acceleration.
+by the pole's velocity and acceleration. A body's momentum and impulse are scaled by the largest
+momentum or impulse of any body (MOMENTUM_COLUMNS): a body at rest by symmetry (the middle of
+three spheres) has a momentum of round-off size, which is no scale for its own differences.
 """
 import csv
 import sys
@@ -18,6 +20,8 @@ SCALE_COLUMN = {
     "velocity_jump": "v_tip_1",
     "acceleration_jump": "a_tip_1",
 }
+
+MOMENTUM_COLUMNS = ("momentum_", "impulse_")
 
 
 def read(path):
@@ -37,8 +41,12 @@ def main():
     for column, name in enumerate(names_a):
         if name == "newton_iterations":
             continue
-        scale_column = names_a.index(SCALE_COLUMN.get(name, name))
-        scale = max(abs(row[scale_column]) for row in rows_a)
+        if name.startswith(MOMENTUM_COLUMNS):
+            scale_columns = [j for j, other in enumerate(names_a)
+                             if other.startswith(MOMENTUM_COLUMNS)]
+        else:
+            scale_columns = [names_a.index(SCALE_COLUMN.get(name, name))]
+        scale = max(abs(row[j]) for row in rows_a for j in scale_columns)
         difference = max(abs(a[column] - b[column]) for a, b in zip(rows_a, rows_b))
         relative = difference / scale if scale > 0 else difference
         if relative > worst:
