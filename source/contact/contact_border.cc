@@ -18,7 +18,7 @@ bool by_first_dof(const Node<dim>& a, const Node<dim>& b)
 template <int dim>
 ContactBorder<dim>::ContactBorder(const std::vector<Node<dim>>& nodes) : volume_nodes(nodes)
 {
-  std::sort(volume_nodes.begin(), volume_nodes.end(), by_first_dof<dim>);
+  std::stable_sort(volume_nodes.begin(), volume_nodes.end(), by_first_dof<dim>);
   volume_nodes.erase(std::unique(volume_nodes.begin(),
                                  volume_nodes.end(),
                                  [](const Node<dim>& a, const Node<dim>& b)
@@ -31,14 +31,14 @@ ContactBorder<dim>::ContactBorder(const std::vector<Node<dim>>& nodes) : volume_
 }
 
 template <int dim>
-const Node<dim>& ContactBorder<dim>::border_node(const Node<dim>& node) const
+unsigned int ContactBorder<dim>::index(const Node<dim>& node) const
 {
   const auto found =
       std::lower_bound(volume_nodes.begin(), volume_nodes.end(), node, by_first_dof<dim>);
   if (found == volume_nodes.end() || found->dofs[0] != node.dofs[0])
     throw std::out_of_range("ContactBorder: the node with DoF " + std::to_string(node.dofs[0]) +
                             " is not a contact node");
-  return border_nodes[found - volume_nodes.begin()];
+  return found - volume_nodes.begin();
 }
 
 template <int dim>

@@ -49,11 +49,13 @@ void ContactConstraints<dim>::build_border(
   {
     std::vector<unsigned int> indices;
     for (const Node<dim>& node : nodes)
-      indices.push_back(contact_border.border_node(node).dofs[0] / dim);
+      indices.push_back(contact_border.index(node));
     std::sort(indices.begin(), indices.end());
     indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
     coupled_nodes.push_back(std::move(indices));
   }
+  // One multiplier per pair, the normal constraint's (a tangential component, of a tied or a
+  // friction model, would need its rows, forces and active set here).
   block = MultiplierBlock(std::vector<unsigned int>(volume_pairs.size(), 1));
   multiplier_values.reinit(block.n_multipliers());
   move_pairs_to_border();
@@ -62,12 +64,14 @@ void ContactConstraints<dim>::build_border(
 template <int dim>
 void ContactConstraints<dim>::move_pairs_to_border()
 {
+  // The border DoFs only: a node's position (and body) stay the pair's own, which a geometry may
+  // have moved (bodies touching at the start).
   pairs = volume_pairs;
   for (ContactPair<dim>& pair : pairs)
   {
-    pair.slave = contact_border.border_node(pair.slave);
+    pair.slave.dofs = contact_border.node(contact_border.index(pair.slave)).dofs;
     for (MasterNode<dim>& master : pair.masters)
-      master.node = contact_border.border_node(master.node);
+      master.node.dofs = contact_border.node(contact_border.index(master.node)).dofs;
   }
 }
 
@@ -147,7 +151,8 @@ std::vector<bool> ContactConstraints<dim>::contact_dofs(const types::global_dof_
 template <int dim>
 void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
 {
-  // G^T lambda with G = dg/du: c_j n at the pair's nodes (-n on the slave node of body A).
+  // G^T lambda with G = dg/du: c_j n at the pair's nodes (-n on the slave node of body A). Only
+  // the normal constraint exists: one multiplier per pair (a tangential one needs its own rows).
   for (unsigned int k = 0; k < pairs.size(); ++k)
     pairs[k].for_each_node(
         [&](const Node<dim>& node, const double coefficient)

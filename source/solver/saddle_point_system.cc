@@ -264,23 +264,23 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
   if (Utilities::MPI::max(static_cast<int>(leading_block_changed), communicator) > 0)
     return {};
   // The multipliers whose rows and columns hold the changes, on all ranks.
-  std::vector<types::global_dof_index> local_pairs;
+  std::vector<types::global_dof_index> local_multipliers;
   for (const Change& change : changes)
-    local_pairs.push_back(change.row >= n_dofs ? change.row : change.column);
-  std::vector<types::global_dof_index> pairs;
-  for (const auto& rank_pairs : Utilities::MPI::all_gather(communicator, local_pairs))
-    pairs.insert(pairs.end(), rank_pairs.begin(), rank_pairs.end());
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
-  if (pairs.empty() || pairs.size() > max_low_rank_pairs)
+    local_multipliers.push_back(change.row >= n_dofs ? change.row : change.column);
+  std::vector<types::global_dof_index> multipliers;
+  for (const auto& rank_multipliers : Utilities::MPI::all_gather(communicator, local_multipliers))
+    multipliers.insert(multipliers.end(), rank_multipliers.begin(), rank_multipliers.end());
+  std::sort(multipliers.begin(), multipliers.end());
+  multipliers.erase(std::unique(multipliers.begin(), multipliers.end()), multipliers.end());
+  if (multipliers.empty() || multipliers.size() > max_low_rank_multipliers)
     return {};
 
   // dA = sum_j e_j (row j of dA)^T + sum_j (column j of dA outside the rows j) e_j^T over the
   // multipliers j: U = [e_j, column_j], V = [row_j, e_j].
-  const unsigned int m = pairs.size();
+  const unsigned int m = multipliers.size();
   const auto n_total   = system_matrix.m();
-  const auto index_of  = [&](const types::global_dof_index pair)
-  { return std::lower_bound(pairs.begin(), pairs.end(), pair) - pairs.begin(); };
+  const auto index_of  = [&](const types::global_dof_index row)
+  { return std::lower_bound(multipliers.begin(), multipliers.end(), row) - multipliers.begin(); };
   std::vector<Vector<double>> columns_u(2 * m, Vector<double>(n_total));
   std::vector<Vector<double>> columns_v(2 * m, Vector<double>(n_total));
   for (const Change& change : changes)
@@ -293,8 +293,8 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
       sum_over_ranks(column, communicator);
   for (unsigned int j = 0; j < m; ++j)
   {
-    columns_u[j][pairs[j]]     = 1.;
-    columns_v[m + j][pairs[j]] = 1.;
+    columns_u[j][multipliers[j]]     = 1.;
+    columns_v[m + j][multipliers[j]] = 1.;
   }
   try
   {

@@ -65,7 +65,7 @@ struct DenseRows : MultiplierRows
 // is linear in u at fixed normals (bound 1e-10 absolute on coefficients of order 1). An oblique
 // node-to-node pair and an oblique wall pair, at a displacement that leaves them penetrating. The
 // three nodes are nodes 3, 1 and 5 of a volume of 6 nodes, so that the rows reach the volume DoFs
-// through the contact border (which numbers them 1, 3, 5) and no other.
+// through the contact border (which numbers volume nodes 1, 3, 5 as 0, 1, 2) and no other.
 TEST(ContactConstraints, RowsAreMinusTheGapGradient)
 {
   const Tensor<1, 2> n1({0.6, 0.8}), n2({-0.28, 0.96});

@@ -32,7 +32,7 @@ public:
 
   /**
    * The border of the volume nodes `nodes` (repeats allowed: each node once, identified by its
-   * first DoF).
+   * first DoF; the first of its copies in `nodes` gives its position).
    */
   explicit ContactBorder(const std::vector<Node<dim>>& nodes);
 
@@ -55,10 +55,10 @@ public:
   }
 
   /**
-   * The contact node of the volume node `node`, as a border node (node()). Throws
+   * The index (< n_nodes()) of the contact node that stands for the volume node `node`. Throws
    * std::out_of_range if `node` is not a contact node.
    */
-  const Node<dim>& border_node(const Node<dim>& node) const;
+  unsigned int index(const Node<dim>& node) const;
 
   /** The contact nodes' entries of the volume vector `volume` (a border vector). */
   Vector<double> gather(const Vector<double>& volume) const;

@@ -206,7 +206,10 @@ private:
 
   /** The pairs with their nodes in the volume numbering: what the geometry updates. */
   std::vector<ContactPair<dim>> volume_pairs;
-  /** The same pairs on the border. */
+  /**
+   * The same pairs on the border, derived from volume_pairs by move_pairs_to_border(): a change
+   * made to these alone is lost at the next update; change volume_pairs and derive them again.
+   */
   std::vector<ContactPair<dim>> pairs;
   ContactBorder<dim> contact_border;
   /** Per pair: the contact nodes its rows may couple to over the run. */

@@ -76,7 +76,7 @@ public:
   void update_pairs(const Vector<double>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
 
-  /** The DoFs of the pair's two nodes. */
+  /** The pair's two nodes. */
   std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
 
   /**

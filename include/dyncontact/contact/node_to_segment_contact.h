@@ -95,7 +95,7 @@ public:
   void update_master_points(const Vector<double>& displacement,
                             std::vector<ContactPair<dim>>& pairs) const override;
 
-  /** The slave node's DoFs and those of every node of the pair's candidate faces. */
+  /** The slave node and every node of the pair's candidate faces. */
   std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
 
   /** ContactSurface::consistent_pressures() of the slave surface at the pairs' slave nodes. */

@@ -19,7 +19,7 @@ namespace dyncontact
  * Z (k solves with A0) and the LU factors of the k x k capacitance matrix I_k + V^T Z (Eigen) are
  * computed at construction; each correct() is then k dot products and k vector updates. It serves
  * SaddlePointSystem, whose matrix changes in a few multiplier rows and columns when contact pairs
- * enter or leave the active set: a rank-2 change per pair instead of a new factorization.
+ * enter or leave the active set: a rank-2 change per multiplier instead of a new factorization.
  * Vectors are whole (all n entries) on every MPI rank, so every rank computes the same x.
  */
 class LowRankUpdate

@@ -39,10 +39,10 @@ namespace dyncontact
  * cost, comparing the entries bit for bit with those factorized:
  * - none changed (linear material, the same active set and pairs): the factors serve as they
  *   are, and the solution is the same to the last bit as with a fresh factorization;
- * - only entries in the rows and columns of at most max_low_rank_pairs multipliers changed (pairs
- *   that entered or left the active set, with a linear material or a reused tangent): a
- *   LowRankUpdate of the factors (Sherman-Morrison-Woodbury; 2 solves per changed pair instead of
- *   a factorization, the solution equal to round-off);
+ * - only entries in the rows and columns of at most max_low_rank_multipliers multipliers changed
+ *   (pairs that entered or left the active set, with a linear material or a reused tangent): a
+ *   LowRankUpdate of the factors (Sherman-Morrison-Woodbury; 2 solves per changed multiplier
+ *   instead of a factorization, the solution equal to round-off);
  * - otherwise: a new numeric factorization.
  *
  * Rows of fixed DoFs (e.g. u_r = 0 on a symmetry axis) are replaced by a diagonal row on
@@ -130,7 +130,7 @@ public:
    * and columns of at most this many multipliers (2 solves each: 8 solves cost about half a
    * factorization of the 13k-DoF spheres).
    */
-  static constexpr unsigned int max_low_rank_pairs = 4;
+  static constexpr unsigned int max_low_rank_multipliers = 4;
 
   /** What update_factorization() did. */
   enum class Update

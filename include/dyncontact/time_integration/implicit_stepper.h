@@ -84,7 +84,10 @@ private:
   ContactConstraints<dim>& contact;
   const ContactDynamics<dim>& dynamics;
   ContactNewtonSolver<dim>& solver;
-  /** The lumped mass and fixed flags of the contact nodes (border vectors). */
+  /**
+   * The lumped mass and fixed flags of the contact nodes (border vectors), gathered at
+   * construction: the lumped mass must be final by then (mass redistribution sets it first).
+   */
   const Vector<double> border_mass;
   const std::vector<bool> border_fixed;
   StepState current;
