@@ -158,8 +158,10 @@ template <int dim>
 ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
                                   const Mapping<dim>& mapping,
                                   const Kinematics<dim>& kinematics,
-                                  std::vector<BodyMaterial> bodies)
-    : dof_handler(dof_handler), mapping(mapping), kinematics(kinematics), bodies(std::move(bodies))
+                                  std::vector<BodyMaterial> bodies,
+                                  const AffineConstraints<double>* constraints)
+    : dof_handler(dof_handler), mapping(mapping), kinematics(kinematics), bodies(std::move(bodies)),
+      constraints(constraints)
 {
   for (const auto& cell : dof_handler.active_cell_iterators())
     AssertThrow(cell->material_id() < this->bodies.size(),
@@ -456,7 +458,12 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
       for (unsigned int i = 0; i < n_local; ++i)
         (*internal_force)[cell.dofs[i]] += copy.force[i];
     if (tangent != nullptr)
-      tangent->add(cell.dofs, copy.tangent);
+    {
+      if (constraints != nullptr)
+        constraints->distribute_local_to_global(copy.tangent, cell.dofs, *tangent);
+      else
+        tangent->add(cell.dofs, copy.tangent);
+    }
   };
   WorkStream::run(cells.cbegin(),
                   cells.cend(),

@@ -18,12 +18,15 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   dof_handler.distribute_dofs(fe);
   nodes      = std::make_unique<NodeIndex<dim>>(dof_handler, mapping);
   kinematics = model.create_kinematics();
-  bodies     = std::make_unique<ElasticBodies<dim>>(
-      dof_handler, mapping, *kinematics, model.body_materials());
-  fixed_dofs = model.fixed_dofs(*nodes);
   is_fixed_dof.assign(dof_handler.n_dofs(), false);
-  for (const auto dof : fixed_dofs)
+  for (const auto dof : model.fixed_dofs(*nodes))
+  {
+    constraints.add_line(dof);
     is_fixed_dof[dof] = true;
+  }
+  constraints.close();
+  bodies = std::make_unique<ElasticBodies<dim>>(
+      dof_handler, mapping, *kinematics, model.body_materials(), &constraints);
   loads = std::make_unique<SurfaceTractions<dim>>(
       dof_handler, mapping, *kinematics, model.surface_tractions());
   highest_frequency = bodies->highest_frequency_bound(is_fixed_dof);

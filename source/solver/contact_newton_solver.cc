@@ -52,22 +52,21 @@ struct ContactNewtonSolver<dim>::Evaluation
 };
 
 template <int dim>
-ContactNewtonSolver<dim>::ContactNewtonSolver(
-    const DoFHandler<dim>& dof_handler,
-    const ElasticBodies<dim>& bodies,
-    ContactConstraints<dim>& contact,
-    const Vector<double>& lumped_mass,
-    const std::vector<types::global_dof_index>& fixed_dofs,
-    const NewtonParameters& parameters,
-    const double length_scale,
-    TimerOutput& timer,
-    const double alpha_f)
+ContactNewtonSolver<dim>::ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
+                                              const ElasticBodies<dim>& bodies,
+                                              ContactConstraints<dim>& contact,
+                                              const Vector<double>& lumped_mass,
+                                              const AffineConstraints<double>& constraints,
+                                              const NewtonParameters& parameters,
+                                              const double length_scale,
+                                              TimerOutput& timer,
+                                              const double alpha_f)
     : contact(contact), parameters(parameters),
       gap_tolerance((parameters.residual_tolerance + DynamicResidual<dim>::roundoff_factor) *
                     length_scale),
       timer(timer), alpha_f(alpha_f),
-      system(dof_handler, contact, fixed_dofs, parameters.direct_solver),
-      residual(bodies, contact, lumped_mass, fixed_dofs)
+      system(dof_handler, contact, constraints, parameters.direct_solver),
+      residual(bodies, contact, lumped_mass, constraints)
 {
 }
 

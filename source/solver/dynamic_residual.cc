@@ -10,15 +10,15 @@ template <int dim>
 DynamicResidual<dim>::DynamicResidual(const ElasticBodies<dim>& bodies,
                                       const ContactConstraints<dim>& contact,
                                       const Vector<double>& lumped_mass,
-                                      const std::vector<types::global_dof_index>& fixed_dofs)
+                                      const AffineConstraints<double>& constraints)
     : bodies(bodies), contact(contact), lumped_mass(lumped_mass),
       is_fixed(lumped_mass.size(), false), inertia_force(lumped_mass.size()),
       contact_force(lumped_mass.size()),
       constraint_residual(contact.multiplier_block().n_multipliers()),
       force_residual(lumped_mass.size())
 {
-  for (const auto dof : fixed_dofs)
-    is_fixed[dof] = true;
+  for (types::global_dof_index i = 0; i < is_fixed.size(); ++i)
+    is_fixed[i] = constraints.is_constrained(i);
 }
 
 template <int dim>
@@ -38,7 +38,7 @@ void DynamicResidual<dim>::assemble(const Step& step,
                                     const Vector<double>& displacement,
                                     SaddlePointSystem<dim>* tangent)
 {
-  // The diagonal of an inactive pair's trivial row lambda = 0, also that of a fixed DoF's row:
+  // The diagonal of an inactive pair's trivial row lambda = 0:
   // the mean inertia stiffness, the scale of K_eff's diagonal in a step with omega dt >> 1.
   const double inactive_diagonal = step.inertia_factor * lumped_mass.mean_value();
   try
@@ -53,7 +53,7 @@ void DynamicResidual<dim>::assemble(const Step& step,
   catch (const SolverFailure&)
   {
     if (tangent != nullptr)
-      tangent->abandon_assembly(); // flush entries added before the failure
+      tangent->finish_assembly(); // flush entries added before the failure
     throw;
   }
   for (types::global_dof_index i = 0; i < inertia_force.size(); ++i)
@@ -74,7 +74,7 @@ void DynamicResidual<dim>::assemble(const Step& step,
                                    constraint_residual);
   if (tangent != nullptr)
   {
-    tangent->finish_assembly(inactive_diagonal);
+    tangent->finish_assembly();
     largest_tangent_diagonal = tangent->largest_displacement_diagonal();
   }
 }

@@ -72,13 +72,14 @@ DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,
 template <int dim>
 SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
                                           const ContactConstraints<dim>& contact,
-                                          const std::vector<types::global_dof_index>& fixed_dofs,
+                                          const AffineConstraints<double>& constraints,
                                           const DirectSolverPackage package)
     : communicator(dof_handler.get_triangulation().get_communicator()),
       n_dofs(dof_handler.n_dofs()), n_multipliers(contact.multiplier_block().n_multipliers()),
       multiplier_rows_owner(Utilities::MPI::this_mpi_process(communicator) ==
                             Utilities::MPI::n_mpi_processes(communicator) - 1),
-      locally_owned_dofs(dof_handler.locally_owned_dofs()), direct_solver(package, communicator)
+      locally_owned_dofs(dof_handler.locally_owned_dofs()), constraints(constraints),
+      direct_solver(package, communicator)
 {
   const types::global_dof_index n_total = n_dofs + n_multipliers;
   locally_owned_rows.set_size(n_total);
@@ -86,9 +87,6 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
   if (multiplier_rows_owner)
     locally_owned_rows.add_range(n_dofs, n_total);
   locally_owned_rows.compress();
-  for (const auto dof : fixed_dofs)
-    if (locally_owned_rows.is_element(dof))
-      locally_owned_fixed_rows.push_back(dof);
   system_matrix.reinit(
       locally_owned_rows,
       locally_owned_rows,
@@ -101,6 +99,8 @@ void SaddlePointSystem<dim>::add_coupling(const unsigned int multiplier,
                                           const types::global_dof_index dof,
                                           const double value)
 {
+  if (constraints.is_constrained(dof))
+    return;
   system_matrix.add(n_dofs + multiplier, dof, value);
   system_matrix.add(dof, n_dofs + multiplier, value);
 }
@@ -146,14 +146,7 @@ void SaddlePointSystem<dim>::start_assembly()
 }
 
 template <int dim>
-void SaddlePointSystem<dim>::finish_assembly(const double fixed_row_diagonal)
-{
-  system_matrix.compress(VectorOperation::add);
-  system_matrix.clear_rows(locally_owned_fixed_rows, fixed_row_diagonal);
-}
-
-template <int dim>
-void SaddlePointSystem<dim>::abandon_assembly()
+void SaddlePointSystem<dim>::finish_assembly()
 {
   system_matrix.compress(VectorOperation::add);
 }

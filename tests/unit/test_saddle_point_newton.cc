@@ -84,12 +84,19 @@ struct TwoSprings
     b                     = node_b.dofs[0];
     fixed                 = {nodes.closest_node(0, Point<1>(0.)).dofs[0],
                              nodes.closest_node(1, Point<1>(2. + variant.gap)).dofs[0]};
+    for (const auto dof : fixed)
+      constraints.add_line(dof);
+    constraints.close();
     const std::shared_ptr<const Material> spring =
         variant.neo_hookean ? std::shared_ptr<const Material>(
                                   std::make_shared<CompressibleNeoHookeanMaterial>(3., 0.))
                             : std::make_shared<LinearElasticMaterial>(3., 0.);
-    bodies = std::make_unique<ElasticBodies<1>>(
-        dof_handler, mapping, kinematics, std::vector<BodyMaterial>{{spring, 2.}, {spring, 2.}});
+    bodies =
+        std::make_unique<ElasticBodies<1>>(dof_handler,
+                                           mapping,
+                                           kinematics,
+                                           std::vector<BodyMaterial>{{spring, 2.}, {spring, 2.}},
+                                           &constraints);
     mass = bodies->lumped_mass();
     Tensor<1, 1> normal; // from A toward B
     normal[0] = 1.;
@@ -101,7 +108,7 @@ struct TwoSprings
         *bodies,
         *contact,
         mass,
-        fixed,
+        constraints,
         NewtonParameters{
             variant.max_iterations, 1e-12, DirectSolverPackage::klu, NewtonMethod::full},
         1.,
@@ -173,6 +180,7 @@ struct TwoSprings
   BarKinematics kinematics{{1., 1.}};
   types::global_dof_index a = 0, b = 0;
   std::vector<types::global_dof_index> fixed;
+  AffineConstraints<double> constraints; ///< the fixed ends held at zero
   std::unique_ptr<ElasticBodies<1>> bodies;
   Vector<double> mass;
   std::unique_ptr<ContactConstraints<1>> contact;
@@ -218,7 +226,7 @@ std::string solver_failure(const std::function<void()>& run)
   return "";
 }
 /**
- * The saddle-point matrix of SystemSolvesAKnownSaddlePointAndClearsFixedRows times `scale`, with
+ * The saddle-point matrix of SystemSolvesAKnownSaddlePoint times `scale`, with
  * the constraint row and column (+1 at a, -1 at b) times `constraint_scale`, into `system`.
  */
 void assemble_known_system(const TwoSprings& springs,
@@ -232,13 +240,13 @@ void assemble_known_system(const TwoSprings& springs,
   for (const auto& [free, fixed] : {std::pair{a, springs.fixed[0]}, std::pair{b, springs.fixed[1]}})
   {
     matrix.add(free, free, 4. * scale);
-    matrix.add(free, fixed, -3. * scale);
-    matrix.add(fixed, free, -3. * scale);
-    matrix.add(fixed, fixed, 3. * scale);
+    matrix.add(fixed, fixed, 2. * scale); // the diagonal of an eliminated (constrained) DoF
+    // The coupling to the constrained DoF is dropped, as the contact layer's are.
+    system.multiplier_rows()->add_coupling(0, fixed, 5.);
   }
   for (const auto& [dof, sign] : {std::pair{a, 1.}, std::pair{b, -1.}})
     system.multiplier_rows()->add_coupling(0, dof, sign * scale * constraint_scale);
-  system.finish_assembly(2. * scale);
+  system.finish_assembly();
 }
 } // namespace
 
@@ -249,23 +257,24 @@ TEST(SaddlePointNewton, LumpedMassIsTheHandValue)
     EXPECT_NEAR(springs.mass[i], 1., tolerance) << "DoF " << i;
 }
 
-// The saddle-point system alone: [K' at a and b, spring couplings to the fixed ends, constraint
-// row (+1 at a, -1 at b)] with the fixed rows replaced by the diagonal 2. Chosen answer
-// a = 0.25, b = -0.25, lambda = 1, fixed ends 0.15 (right-hand side 0.3 over the diagonal 2);
-// the right-hand side is the matrix times it, by hand: row a: 4 (0.25) - 3 (0.15) + 1 = 1.55,
-// row b: 4 (-0.25) - 3 (0.15) - 1 = -2.45, constraint row: 0.25 + 0.25 = 0.5.
+// The saddle-point system alone: [K' at a and b, constraint row (+1 at a, -1 at b)] with the fixed
+// ends eliminated, their rows and columns empty but for the diagonal 2 (a coupling of the
+// constraint row to them is dropped). Chosen answer a = 0.25, b = -0.25, lambda = 1, fixed ends
+// 0.15 (right-hand side 0.3 over the diagonal 2); the right-hand side is the matrix times it, by
+// hand: row a: 4 (0.25) + 1 = 2, row b: 4 (-0.25) - 1 = -2, constraint row: 0.25 + 0.25 = 0.5.
 //
 // Each direct solver package (KLU, UMFPACK, MUMPS) on the same system; the factorization is kept
 // while the matrix stays the same: assembling the same entries again does not refactorize and
 // solves the same, and the whole matrix assembled with twice its entries (fixed rows 4) is
 // refactorized, giving half the solution (a stale factorization would give the old one).
-TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePointAndClearsFixedRows)
+TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePoint)
 {
   const TwoSprings springs;
   for (const auto package : all_packages)
   {
     SCOPED_TRACE(direct_solver_names().name(package));
-    SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed, package);
+    SaddlePointSystem<1> system(
+        springs.dof_handler, *springs.contact, springs.constraints, package);
     ASSERT_NE(system.multiplier_rows(), nullptr);
     const types::global_dof_index a = springs.a, b = springs.b,
                                   lambda  = springs.dof_handler.n_dofs();
@@ -276,8 +285,8 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePointAndClearsFixedRows)
     EXPECT_EQ(system.largest_displacement_diagonal(), 4.);
 
     Vector<double> right_hand_side(lambda + 1);
-    right_hand_side[a]       = 1.55;
-    right_hand_side[b]       = -2.45;
+    right_hand_side[a]       = 2.;
+    right_hand_side[b]       = -2.;
     right_hand_side[fixed_a] = 0.3;
     right_hand_side[fixed_b] = 0.3;
     right_hand_side[lambda]  = 0.5;
@@ -325,8 +334,9 @@ TEST(SaddlePointNewton, ConstraintRowChangeIsALowRankUpdateOfTheFactors)
   for (const auto package : all_packages)
   {
     SCOPED_TRACE(direct_solver_names().name(package));
-    SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed, package);
-    SaddlePointSystem<1> fresh(springs.dof_handler, *springs.contact, springs.fixed, package);
+    SaddlePointSystem<1> system(
+        springs.dof_handler, *springs.contact, springs.constraints, package);
+    SaddlePointSystem<1> fresh(springs.dof_handler, *springs.contact, springs.constraints, package);
     Vector<double> right_hand_side(springs.dof_handler.n_dofs() + 1);
     right_hand_side[springs.a]                    = 1.55;
     right_hand_side[springs.b]                    = -2.45;
@@ -368,9 +378,10 @@ TEST(SaddlePointNewton, SingularSystemIsASolverFailure)
   const TwoSprings springs;
   for (const auto package : all_packages)
   {
-    SaddlePointSystem<1> system(springs.dof_handler, *springs.contact, springs.fixed, package);
+    SaddlePointSystem<1> system(
+        springs.dof_handler, *springs.contact, springs.constraints, package);
     system.start_assembly();
-    system.finish_assembly(0.); // all zero
+    system.finish_assembly(); // all zero
     const std::string message = solver_failure([&] { system.update_factorization(true); });
     EXPECT_EQ(message.rfind("the direct solver (", 0), 0u) << message;
   }

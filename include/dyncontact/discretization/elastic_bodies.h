@@ -8,6 +8,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -62,10 +63,18 @@ template <int dim>
 class ElasticBodies
 {
 public:
+  /**
+   * The bodies of `dof_handler`'s cells (material id b: bodies[b]). If `constraints` is given (it
+   * must outlive this object), every tangent goes through it
+   * (AffineConstraints::distribute_local_to_global): the rows and columns of its constrained DoFs
+   * (u_i = 0: the axis, clamps) get no entry but a positive diagonal, so that a zero right-hand
+   * side there gives a zero increment and the other rows do not see those DoFs.
+   */
   ElasticBodies(const DoFHandler<dim>& dof_handler,
                 const Mapping<dim>& mapping,
                 const Kinematics<dim>& kinematics,
-                std::vector<BodyMaterial> bodies);
+                std::vector<BodyMaterial> bodies,
+                const AffineConstraints<double>* constraints = nullptr);
 
   /**
    * Diagonal of the lumped mass matrix [mass], one entry per DoF, on every rank. The DoFs flagged
@@ -145,6 +154,8 @@ private:
   const Mapping<dim>& mapping;
   const Kinematics<dim>& kinematics;
   std::vector<BodyMaterial> bodies;
+  /** The tangent goes through these (null: none), see the constructor. */
+  const AffineConstraints<double>* constraints;
   /** The FE component of each local DoF. */
   std::vector<unsigned int> local_component;
   std::vector<CellData> cells;

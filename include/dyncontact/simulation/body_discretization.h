@@ -11,6 +11,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q_cache.h>
+#include <deal.II/lac/affine_constraints.h>
 
 #include <memory>
 #include <vector>
@@ -21,8 +22,8 @@ namespace dyncontact
  * The bodies of a ProblemModel discretized: the mesh (shared by every rank of MPI_COMM_WORLD), the
  * vector-valued FE_Q of the model's degree, the curved-cell mapping (its support points computed
  * once from the manifolds), the DoFs and nodes, the kinematics, the elastic bodies with their
- * lumped masses, the DoFs held at zero and the surface loads. Built once; throws the model's
- * InputError for a bad mesh.
+ * lumped masses, the DoFs held at zero (as constraints) and the surface loads. Built once; throws
+ * the model's InputError for a bad mesh.
  */
 template <int dim>
 class BodyDiscretization
@@ -36,9 +37,13 @@ public:
   DoFHandler<dim> dof_handler;
   std::unique_ptr<NodeIndex<dim>> nodes;
   std::unique_ptr<Kinematics<dim>> kinematics;
+  /**
+   * The DoFs held at zero for all time (the axis, clamps) as homogeneous constraints u_i = 0:
+   * the tangent's rows and columns of these DoFs are eliminated (ElasticBodies).
+   */
+  AffineConstraints<double> constraints;
+  std::vector<bool> is_fixed_dof; ///< per DoF: constrained
   std::unique_ptr<ElasticBodies<dim>> bodies;
-  std::vector<types::global_dof_index> fixed_dofs; ///< held at zero for all time
-  std::vector<bool> is_fixed_dof;                  ///< per DoF: in fixed_dofs
   std::unique_ptr<SurfaceTractions<dim>> loads;
   /** ElasticBodies::highest_frequency_bound() of the bodies with their fixed DoFs [1/time]. */
   double highest_frequency = 0.;

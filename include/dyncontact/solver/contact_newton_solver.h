@@ -74,20 +74,20 @@ public:
   };
 
   /**
-   * `fixed_dofs` keep a zero increment. `length_scale` (e.g. the smallest element size) turns the
-   * relative tolerance, plus the round-off floor 1e3 eps, into the gap tolerance used for
-   * activation and constraint convergence (without the floor a tolerance of 1e-16 asked for gaps
-   * below the round-off of the positions: measured 8.9e-16 left vs 3.2e-17 asked).
-   * `timer` receives the phases "assembly", "factorization", "low-rank update" (of the factors,
-   * SaddlePointSystem::update_factorization()) and "linear solve" (with the factors). `alpha_f`
-   * in [0, 1): the integrator's weight of u_n in the configuration its balance holds at,
+   * The DoFs `constraints` holds at zero keep a zero increment. `length_scale` (e.g. the smallest
+   * element size) turns the relative tolerance, plus the round-off floor 1e3 eps, into the gap
+   * tolerance used for activation and constraint convergence (without the floor a tolerance of
+   * 1e-16 asked for gaps below the round-off of the positions: measured 8.9e-16 left vs 3.2e-17
+   * asked). `timer` receives the phases "assembly", "factorization", "low-rank update" (of the
+   * factors, SaddlePointSystem::update_factorization()) and "linear solve" (with the factors).
+   * `alpha_f` in [0, 1): the integrator's weight of u_n in the configuration its balance holds at,
    * GeneralizedAlpha::alpha_f() (0: Newmark); the master points are taken there.
    */
   ContactNewtonSolver(const DoFHandler<dim>& dof_handler,
                       const ElasticBodies<dim>& bodies,
                       ContactConstraints<dim>& contact,
                       const Vector<double>& lumped_mass,
-                      const std::vector<types::global_dof_index>& fixed_dofs,
+                      const AffineConstraints<double>& constraints,
                       const NewtonParameters& parameters,
                       double length_scale,
                       TimerOutput& timer,

@@ -22,7 +22,7 @@ namespace dyncontact
  * dt^2), M the lumped mass, Q(u) the internal force of the ElasticBodies, W the external force and
  * G^T lambda the contact force of the multipliers the contact layer holds. The tangent, if asked
  * for, is the symmetric saddle-point matrix [K_eff, -G^T; -G, -D] with K_eff = c M + dQ/du,
- * assembled into a SaddlePointSystem, whose fixed rows get the inactive pairs' diagonal c mean(M).
+ * assembled into a SaddlePointSystem (the rows and columns of constrained DoFs eliminated).
  * It also returns the figures Newton's convergence test and line search need (see Figures).
  *
  * It lives in the solver module rather than in discretization: it combines the bodies
@@ -78,12 +78,12 @@ public:
 
   /**
    * `lumped_mass` (n_dofs entries, the diagonal of M) and `contact` are referenced, not copied,
-   * and must outlive this object; `fixed_dofs` (indices < n_dofs) get a zero force row.
+   * and must outlive this object; the DoFs `constraints` holds at zero get a zero force row.
    */
   DynamicResidual(const ElasticBodies<dim>& bodies,
                   const ContactConstraints<dim>& contact,
                   const Vector<double>& lumped_mass,
-                  const std::vector<types::global_dof_index>& fixed_dofs);
+                  const AffineConstraints<double>& constraints);
 
   /**
    * Evaluates the residual at `displacement` = step.predictor + `increment` (both n_dofs

@@ -9,6 +9,7 @@
 #include <deal.II/base/index_set.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
@@ -45,8 +46,10 @@ namespace dyncontact
  *   instead of a factorization, the solution equal to round-off);
  * - otherwise: a new numeric factorization.
  *
- * Rows of fixed DoFs (e.g. u_r = 0 on a symmetry axis) are replaced by a diagonal row on
- * finish_assembly(), so that a zero right-hand side there gives a zero increment.
+ * Constrained DoFs (u_i = 0: e.g. u_r on a symmetry axis, AffineConstraints) have their rows and
+ * columns eliminated by the assembly of the bodies (ElasticBodies), a positive diagonal left; the
+ * contact layer's couplings to them are dropped here (add_coupling()), so that a zero right-hand
+ * side there gives a zero increment.
  *
  * It owns the matrix, not its entries' meaning: what is assembled into it is the caller's
  * (DynamicResidual); it knows neither the bodies nor Newton's method.
@@ -61,12 +64,12 @@ public:
   /**
    * Builds the pattern and the distributed matrix (all entries zero) for the DoFs of
    * `dof_handler` and the multipliers of `contact` (their number is fixed from here on).
-   * `fixed_dofs` are DoF indices < n_dofs whose rows finish_assembly() replaces. The communicator
+   * `constraints` (which must outlive this object) are the DoFs held at zero. The communicator
    * is the triangulation's.
    */
   SaddlePointSystem(const DoFHandler<dim>& dof_handler,
                     const ContactConstraints<dim>& contact,
-                    const std::vector<types::global_dof_index>& fixed_dofs,
+                    const AffineConstraints<double>& constraints,
                     DirectSolverPackage package);
 
   /** The matrix, for adding entries of the leading block (displacement rows and columns). */
@@ -78,7 +81,10 @@ public:
    */
   MultiplierRows* multiplier_rows() { return multiplier_rows_owner ? this : nullptr; }
 
-  /** Adds `value` at (row of `multiplier`, `dof`) and (`dof`, its column). */
+  /**
+   * Adds `value` at (row of `multiplier`, `dof`) and (`dof`, its column); nothing for a
+   * constrained `dof`.
+   */
   void add_coupling(unsigned int multiplier, types::global_dof_index dof, double value) override;
 
   /** Adds `value` on the diagonal of `multiplier`'s row. */
@@ -106,22 +112,14 @@ public:
   void start_assembly();
 
   /**
-   * Ends an assembly: exchanges the entries added into rows owned by other ranks (a collective
-   * call) and replaces every locally owned fixed DoF's row by `fixed_row_diagonal` on the
-   * diagonal, zero elsewhere (the columns keep their entries).
+   * Ends an assembly, also one that stopped early (a failed evaluation): exchanges the entries
+   * added into rows owned by other ranks (a collective call).
    */
-  void finish_assembly(double fixed_row_diagonal);
-
-  /**
-   * Exchanges the entries added so far without touching the fixed rows: for an assembly that
-   * stopped early (a failed evaluation), so that every rank's pending additions are flushed
-   * (collective, like finish_assembly()).
-   */
-  void abandon_assembly();
+  void finish_assembly();
 
   /**
    * max |diag| over the displacement rows (index < n_dofs) of all ranks: the stiffness scale of
-   * the assembled K_eff (fixed rows included, with their replaced diagonal). Collective.
+   * the assembled K_eff (constrained rows included, with their diagonal). Collective.
    */
   double largest_displacement_diagonal() const;
 
@@ -184,7 +182,7 @@ private:
   const IndexSet locally_owned_dofs;
   /** This rank's rows: its DoFs and, on the last rank, the multiplier rows. */
   IndexSet locally_owned_rows;
-  std::vector<types::global_dof_index> locally_owned_fixed_rows;
+  const AffineConstraints<double>& constraints;
   Matrix system_matrix;
   DirectSolver direct_solver;
   /** This rank's matrix entries (row by row) at the last factorization; empty before the first. */
