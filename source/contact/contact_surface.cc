@@ -3,7 +3,7 @@
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_q_eulerian.h>
+#include <deal.II/fe/mapping_fe_field.h>
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -16,8 +16,12 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
                                     const Kinematics<dim>& kinematics,
                                     const NodeIndex<dim>& nodes,
                                     const types::boundary_id boundary)
-    : dof_handler(dof_handler), kinematics(kinematics), boundary(boundary)
+    : dof_handler(dof_handler), kinematics(kinematics), boundary(boundary),
+      reference_positions(dof_handler.n_dofs())
 {
+  for (const auto& node : nodes.nodes())
+    for (unsigned int d = 0; d < dim; ++d)
+      reference_positions[node.dofs[d]] = node.position[d];
   const FiniteElement<dim>& fe = dof_handler.get_fe();
   std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
   std::vector<types::global_dof_index> first_dofs;
@@ -59,6 +63,14 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
 }
 
 template <int dim>
+Vector<double> ContactSurface<dim>::current_positions(const Vector<double>& displacement) const
+{
+  Vector<double> positions = reference_positions;
+  positions += displacement;
+  return positions;
+}
+
+template <int dim>
 template <typename Integrand>
 void ContactSurface<dim>::integrate_over_faces(const Mapping<dim>& mapping,
                                                const Integrand& integrand) const
@@ -86,8 +98,9 @@ void ContactSurface<dim>::integrate_over_faces(const Mapping<dim>& mapping,
 template <int dim>
 std::vector<Tensor<1, dim>> ContactSurface<dim>::normals(const Vector<double>& displacement) const
 {
-  const FiniteElement<dim>& fe = dof_handler.get_fe();
-  const MappingQEulerian<dim, Vector<double>> current_mapping(fe.degree, dof_handler, displacement);
+  const FiniteElement<dim>& fe   = dof_handler.get_fe();
+  const Vector<double> positions = current_positions(displacement);
+  const MappingFEField<dim, dim, Vector<double>> current_mapping(dof_handler, positions);
   // A face quadrature whose points are the face's support points; the node at point q is the one
   // whose (Lagrange) shape function is one there.
   const Quadrature<dim - 1> node_points(fe.base_element(0).get_unit_face_support_points());
@@ -125,8 +138,8 @@ template <int dim>
 Eigen::SparseMatrix<double>
 ContactSurface<dim>::mass_matrix(const Vector<double>& displacement) const
 {
-  const MappingQEulerian<dim, Vector<double>> current_mapping(
-      dof_handler.get_fe().degree, dof_handler, displacement);
+  const Vector<double> positions = current_positions(displacement);
+  const MappingFEField<dim, dim, Vector<double>> current_mapping(dof_handler, positions);
   std::vector<Eigen::Triplet<double>> entries; // summed by setFromTriplets
   integrate_over_faces(current_mapping,
                        [&entries](const auto& face_nodes,

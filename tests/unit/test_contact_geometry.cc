@@ -19,7 +19,9 @@ namespace dyncontact::testing
 // The spheres are mirror images about z = 0 (body 1 below, body 2 above): at rest every pair's
 // normal is the axis direction (0, 1) exactly, however far off the axis the pair lies, because
 // the mirrored nodal normals differ only in their z component; a pair normal built from one side
-// only, or with the sign of n_B flipped, is not. Bound 1e-12: round-off of the mirrored mesh.
+// only, or with the sign of n_B flipped, is not. Bound 1e-11: round-off of the mirrored mesh, whose
+// curved mid-side nodes come from two spherical manifolds about different centres (measured
+// 4.6e-12 on the curved faces; a one-sided or flipped normal is off by 1e-3 or more).
 TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
 {
   const RunParameters parameters =
@@ -50,8 +52,8 @@ TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
     off_axis += pairs[k].slave.position[0] > 1.;
-    EXPECT_NEAR(at_rest[k].normal[0], 0., 1e-12) << "pair at r = " << pairs[k].slave.position[0];
-    EXPECT_NEAR(at_rest[k].normal[1], 1., 1e-12) << "pair at r = " << pairs[k].slave.position[0];
+    EXPECT_NEAR(at_rest[k].normal[0], 0., 1e-11) << "pair at r = " << pairs[k].slave.position[0];
+    EXPECT_NEAR(at_rest[k].normal[1], 1., 1e-11) << "pair at r = " << pairs[k].slave.position[0];
   }
   EXPECT_GE(off_axis, 10u); // the check covers pairs far from the axis
 
@@ -67,8 +69,8 @@ TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
   const auto translated = moved_to(translation);
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
-    EXPECT_NEAR(translated[k].normal[0], 0., 1e-12) << "pair at r = " << pairs[k].slave.position[0];
-    EXPECT_NEAR(translated[k].normal[1], 1., 1e-12) << "pair at r = " << pairs[k].slave.position[0];
+    EXPECT_NEAR(translated[k].normal[0], 0., 1e-11) << "pair at r = " << pairs[k].slave.position[0];
+    EXPECT_NEAR(translated[k].normal[1], 1., 1e-11) << "pair at r = " << pairs[k].slave.position[0];
   }
 }
 } // namespace dyncontact::testing

@@ -7,6 +7,7 @@
 #include <dyncontact/models/gmsh_mesh.h>
 #include <dyncontact/simulation/parameter_reader.h>
 
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
@@ -231,6 +232,71 @@ TEST(NodeToSegmentContact, OverlapAtTheStartIsAnInputErrorNamingTheBodies)
     EXPECT_NE(std::string(error.what()).find("body 1 and body 2 overlap at t = 0"),
               std::string::npos)
         << error.what();
+  }
+}
+// ContactSurface evaluates the deformed faces with FEFaceValues on the volume cells. Its normals
+// and surface mass matrix must be those of the curved faces the nodes lie on: the quadratic curve
+// through each face's three current nodes (QuadraticFace, the face the isoparametric Q2 mapping
+// makes of the reference's curved faces). The nodal normal is the normalized sum of the faces'
+// unit normals at the node, oriented away from the sphere's centre; M_ij sums over the faces the
+// 4-point Gauss rule (ContactSurface's) of N_i N_j 2 pi r |x'(xi)| on [0, 1]. A surface built on
+// the straight chords of the reference (MappingQEulerian: displacement added to the Q1 geometry)
+// tilted the pole's normal by 0.016 and the far pole's by 0.16 and put the mass matrix 0.8 % off.
+// The check also says that a surface can be evaluated from its nodes alone, on any MPI rank
+// (issue 27, move 5). At a smooth displacement that stretches and bends both spheres; bounds
+// 1e-12 (normals, of order 1) and 1e-12 of the largest entry (mass matrix): round-off of sums over
+// two faces and four points.
+TEST(ContactSurface, NormalsAndMassMatrixAreThoseOfTheCurvedFaces)
+{
+  const TwoSpheres spheres(16.);
+  Vector<double> u(spheres.dof_handler.n_dofs());
+  for (const auto& node : spheres.nodes->nodes())
+  {
+    const Point<2>& x = node.position;
+    u[node.dofs[0]]   = 0.01 * x[0] * std::cos(0.2 * x[1]);
+    u[node.dofs[1]]   = 0.02 * x[0] * x[0] / 64. - 0.005 * x[1];
+  }
+  const std::array<double, 3> node_parameter = {{0., 1., 0.5}}; // xi of QuadraticFace::points
+  const QGauss<1> gauss(4);
+  for (unsigned int body = 0; body < 2; ++body)
+  {
+    const ContactSurface<2> surface = spheres.surface(body);
+    const auto& nodes               = surface.nodes();
+    const Point<2> centre(0., body == 0 ? -8. : 8.);
+    std::vector<Tensor<1, 2>> normals(nodes.size());
+    Eigen::MatrixXd mass = Eigen::MatrixXd::Zero(nodes.size(), nodes.size());
+    for (const auto& face_nodes : surface.face_nodes())
+    {
+      QuadraticFace<2> face;
+      for (unsigned int i = 0; i < 3; ++i)
+        face.points[i] = current_position(nodes[face_nodes[i]], u);
+      for (unsigned int i = 0; i < 3; ++i)
+      {
+        const Tensor<1, 2> tangent = face.tangent(node_parameter[i]);
+        Tensor<1, 2> normal({tangent[1], -tangent[0]});
+        normal /= normal.norm();
+        normals[face_nodes[i]] += (normal * (face.points[i] - centre) > 0. ? 1. : -1.) * normal;
+      }
+      for (unsigned int q = 0; q < gauss.size(); ++q)
+      {
+        const double xi                   = gauss.point(q)[0];
+        const std::array<double, 3> shape = QuadraticFace<2>::shape_values(xi);
+        const double measure = spheres.kinematics->measure_factor(face.point(xi), body) *
+                               face.tangent(xi).norm() * gauss.weight(q);
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            mass(face_nodes[i], face_nodes[j]) += shape[i] * shape[j] * measure;
+      }
+    }
+    ASSERT_GT(nodes.size(), 10u);
+    const std::vector<Tensor<1, 2>> computed = surface.normals(u);
+    for (unsigned int node = 0; node < nodes.size(); ++node)
+      for (unsigned int d = 0; d < 2; ++d)
+        EXPECT_NEAR(computed[node][d], normals[node][d] / normals[node].norm(), 1e-12)
+            << "body " << body << ", node at " << nodes[node].position;
+    const Eigen::MatrixXd computed_mass = Eigen::MatrixXd(surface.mass_matrix(u));
+    EXPECT_LE((computed_mass - mass).cwiseAbs().maxCoeff(), 1e-12 * mass.cwiseAbs().maxCoeff())
+        << "body " << body;
   }
 }
 } // namespace dyncontact::testing
