@@ -106,12 +106,11 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
                     "'Pair 1', 'Pair 2', ... 0: with two bodies, their surfaces of the sphere "
                     "meshes (physical curves 2 and 3, body 1 the slave side); with one body, "
                     "no contact; more bodies need declared pairs. Bars: 0.");
-  for (unsigned int k = 1; k <= n_pairs; ++k)
-  {
-    prm.enter_subsection("Pair " + std::to_string(k));
-    ContactPairParameters::declare_parameters(prm);
-    prm.leave_subsection();
-  }
+  for_each_numbered_subsection(prm,
+                               "Pair",
+                               n_pairs,
+                               [&prm](unsigned int, const std::string&)
+                               { ContactPairParameters::declare_parameters(prm); });
   prm.declare_entry("dynamics",
                     contact_dynamics_names().name(ContactParameters::default_dynamics),
                     Patterns::Selection(contact_dynamics_names().selection()),
@@ -168,13 +167,11 @@ void ContactParameters::parse_parameters(ParameterHandler& prm)
                        " is not allowed: it must be a number > 0 or auto.");
   }
   pairs.resize(prm.get_integer("number of pairs"));
-  for (unsigned int k = 0; k < pairs.size(); ++k)
-  {
-    const std::string name = "Pair " + std::to_string(k + 1);
-    prm.enter_subsection(name);
-    pairs[k].parse_parameters(prm, "Contact/" + name);
-    prm.leave_subsection();
-  }
+  for_each_numbered_subsection(prm,
+                               "Pair",
+                               pairs.size(),
+                               [&](const unsigned int k, const std::string& name)
+                               { pairs[k].parse_parameters(prm, "Contact/" + name); });
   prm.leave_subsection();
 }
 } // namespace dyncontact

@@ -10,11 +10,6 @@ namespace dyncontact
 {
 namespace
 {
-std::string bar_section(const unsigned int bar)
-{
-  return "Bar " + std::to_string(bar + 1);
-}
-
 /**
  * How close the ends of bars `a` and `b` (or of a bar and the wall at `wall`) count as touching:
  * 1e-9 of the shorter element, and at least the round-off of the positions (8 units in the last
@@ -79,12 +74,11 @@ void GeometryParameters::declare_parameters(ParameterHandler& prm, const unsigne
                     "Number of bars [-], 1..100; bar b is described in subsection 'Bar b' and is "
                     "body b of the outputs. Contact is checked between facing ends of bars "
                     "that are neighbours along x, and between the rightmost bar and the wall.");
-  for (unsigned int bar = 0; bar < n_bars; ++bar)
-  {
-    prm.enter_subsection(bar_section(bar));
-    BarParameters::declare_parameters(prm);
-    prm.leave_subsection();
-  }
+  for_each_numbered_subsection(prm,
+                               "Bar",
+                               n_bars,
+                               [&prm](unsigned int, const std::string&)
+                               { BarParameters::declare_parameters(prm); });
   prm.declare_entry("clamped left end",
                     "false",
                     Patterns::Bool(),
@@ -107,12 +101,11 @@ void GeometryParameters::parse_parameters(ParameterHandler& prm)
   prm.enter_subsection("Geometry");
   const unsigned int n_bars = prm.get_integer("number of bars");
   bars.resize(n_bars);
-  for (unsigned int bar = 0; bar < n_bars; ++bar)
-  {
-    prm.enter_subsection(bar_section(bar));
-    bars[bar].parse_parameters(prm, "Geometry/" + bar_section(bar));
-    prm.leave_subsection();
-  }
+  for_each_numbered_subsection(prm,
+                               "Bar",
+                               n_bars,
+                               [&](const unsigned int bar, const std::string& name)
+                               { bars[bar].parse_parameters(prm, "Geometry/" + name); });
   clamped_left_end = prm.get_bool("clamped left end");
   prm.enter_subsection("Rigid wall");
   wall_enabled  = prm.get_bool("enabled");

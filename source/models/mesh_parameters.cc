@@ -194,12 +194,11 @@ void BodiesParameters::declare_parameters(ParameterHandler& prm, const unsigned 
                     Patterns::Integer(1, 100),
                     "Number of bodies of the mesh [-], 1..100; body b is described in subsection "
                     "'Body b' and is physical surface b of the mesh.");
-  for (unsigned int body = 0; body < n_bodies; ++body)
-  {
-    prm.enter_subsection("Body " + std::to_string(body + 1));
-    BodyParameters::declare_parameters(prm);
-    prm.leave_subsection();
-  }
+  for_each_numbered_subsection(prm,
+                               "Body",
+                               n_bodies,
+                               [&prm](unsigned int, const std::string&)
+                               { BodyParameters::declare_parameters(prm); });
   prm.leave_subsection();
 }
 
@@ -207,13 +206,11 @@ void BodiesParameters::parse_parameters(ParameterHandler& prm)
 {
   prm.enter_subsection("Bodies");
   bodies.resize(prm.get_integer("number of bodies"));
-  for (unsigned int body = 0; body < bodies.size(); ++body)
-  {
-    const std::string name = "Body " + std::to_string(body + 1);
-    prm.enter_subsection(name);
-    bodies[body].parse_parameters(prm, "Bodies/" + name);
-    prm.leave_subsection();
-  }
+  for_each_numbered_subsection(prm,
+                               "Body",
+                               bodies.size(),
+                               [&](const unsigned int body, const std::string& name)
+                               { bodies[body].parse_parameters(prm, "Bodies/" + name); });
   prm.leave_subsection();
 }
 template <int dim>

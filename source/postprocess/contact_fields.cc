@@ -8,23 +8,34 @@ namespace dyncontact
 {
 namespace
 {
-/**
- * n . (M a + Q(u) - W) at `node`: the equation-of-motion balance along n, i.e. minus the contact
- * force on a body-A node and plus that on a body-B node.
- */
+/** The lumped mass, acceleration and Q(u) - W of the contact nodes (border vectors). */
 template <int dim>
-double normal_balance(const Node<dim>& node,
-                      const Tensor<1, dim>& normal,
-                      const Vector<double>& lumped_mass,
-                      const Vector<double>& acceleration,
-                      const Vector<double>& net_internal_force)
+struct BorderBalance
 {
-  double balance = 0.;
-  for (unsigned int d = 0; d < dim; ++d)
-    balance += normal[d] * (lumped_mass[node.dofs[d]] * acceleration[node.dofs[d]] +
-                            net_internal_force[node.dofs[d]]);
-  return balance;
-}
+  BorderBalance(const ContactBorder<dim>& border,
+                const Vector<double>& lumped_mass,
+                const Vector<double>& acceleration,
+                const Vector<double>& net_internal_force)
+      : mass(border.gather(lumped_mass)), acceleration(border.gather(acceleration)),
+        net_force(border.gather(net_internal_force))
+  {
+  }
+
+  /**
+   * n . (M a + Q(u) - W) at `node` (a border node): the equation-of-motion balance along n, i.e.
+   * minus the contact force on a body-A node and plus that on a body-B node.
+   */
+  double along(const Node<dim>& node, const Tensor<1, dim>& normal) const
+  {
+    double balance = 0.;
+    for (unsigned int d = 0; d < dim; ++d)
+      balance +=
+          normal[d] * (mass[node.dofs[d]] * acceleration[node.dofs[d]] + net_force[node.dofs[d]]);
+    return balance;
+  }
+
+  const Vector<double> mass, acceleration, net_force;
+};
 } // namespace
 
 template <int dim>
@@ -37,16 +48,12 @@ double ContactFields<dim>::recovered_contact_force(const Vector<double>& lumped_
                                                    const Vector<double>& acceleration,
                                                    const Vector<double>& net_internal_force) const
 {
-  const auto& pairs                  = contact.candidate_pairs();
-  const ContactBorder<dim>& border   = contact.border();
-  const Vector<double> border_mass   = border.gather(lumped_mass),
-                       border_acc    = border.gather(acceleration),
-                       border_forces = border.gather(net_internal_force);
-  double force                       = 0.;
+  const auto& pairs = contact.candidate_pairs();
+  const BorderBalance<dim> balance(contact.border(), lumped_mass, acceleration, net_internal_force);
+  double force = 0.;
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (contact.is_active(k))
-      force -=
-          normal_balance(pairs[k].slave, pairs[k].normal, border_mass, border_acc, border_forces);
+      force -= balance.along(pairs[k].slave, pairs[k].normal);
   return force;
 }
 
@@ -59,13 +66,10 @@ ContactFields<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
 {
   // Every node of an active pair between bodies counts once, on its side (a slave node on A, a
   // master node on B), however many pairs hold it (node-to-segment).
-  const auto& pairs                  = contact.candidate_pairs();
-  const ContactBorder<dim>& border   = contact.border();
-  const Vector<double> border_mass   = border.gather(lumped_mass),
-                       border_acc    = border.gather(acceleration),
-                       border_forces = border.gather(net_internal_force);
+  const auto& pairs = contact.candidate_pairs();
+  const BorderBalance<dim> balance(contact.border(), lumped_mass, acceleration, net_internal_force);
   SideForces forces{0., 0.};
-  std::vector<bool> counted(border.n_dofs(), false);
+  std::vector<bool> counted(contact.border().n_dofs(), false);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (contact.is_active(k) && !pairs[k].against_wall())
       pairs[k].for_each_node(
@@ -74,9 +78,8 @@ ContactFields<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
             if (counted[node.dofs[0]])
               return;
             counted[node.dofs[0]] = true;
-            const double balance =
-                normal_balance(node, direction, border_mass, border_acc, border_forces);
-            (coefficient < 0. ? forces.on_a : forces.on_b) += coefficient < 0. ? -balance : balance;
+            const double along    = balance.along(node, direction);
+            (coefficient < 0. ? forces.on_a : forces.on_b) += coefficient < 0. ? -along : along;
           });
   return forces;
 }

@@ -28,4 +28,22 @@ double get_in_range(ParameterHandler& prm,
                     double low,
                     double high);
 
+/**
+ * Calls f(i, name) inside each of the subsections `prefix 1` .. `prefix n` of the current one,
+ * i = 0 .. n - 1, name = "prefix i+1" (e.g. Contact/Pair 1, Bodies/Body 2, Geometry/Bar 3).
+ */
+template <typename Function>
+void for_each_numbered_subsection(ParameterHandler& prm,
+                                  const std::string& prefix,
+                                  const unsigned int n,
+                                  const Function& f)
+{
+  for (unsigned int i = 0; i < n; ++i)
+  {
+    const std::string name = prefix + " " + std::to_string(i + 1);
+    prm.enter_subsection(name);
+    f(i, name);
+    prm.leave_subsection();
+  }
+}
 } // namespace dyncontact
