@@ -529,19 +529,26 @@ classify_curve(const std::string& filename, const types::boundary_id id, const C
 
 /**
  * Sets the manifold ids of read_gmsh_mesh() and attaches the manifolds: a SphericalManifold with
- * the curve's id on each circular curve, flat faces on the axis and on straight curves, the
- * TransfiniteInterpolationManifold on the cells.
+ * the curve's id on each circular curve, the TransfiniteInterpolationManifold on the cells with a
+ * face on one, flat everywhere else (the axis, straight curves, the other cells and the interior
+ * faces). The transfinite manifold searches all cells it is attached to for every point it places
+ * (deal.II 9.4), so attached to every cell it made set-up quadratic in the number of cells (a
+ * 10^6-DoF mesh did not finish in 3 minutes); the cells away from the curves are bilinear, where
+ * it and the flat manifold place the same points (as in deal.II's step-65).
  */
 void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulation)
 {
-  triangulation.set_all_manifold_ids(SphereMeshIds::interior_manifold);
-  for (const auto& face : triangulation.active_face_iterators())
-    if (face->at_boundary())
-    {
-      const BoundaryCurve* curve = geometry.curve(face->boundary_id());
-      face->set_manifold_id(curve != nullptr && curve->circle ? curve->id
-                                                              : numbers::flat_manifold_id);
-    }
+  for (const auto& cell : triangulation.active_cell_iterators())
+    for (const auto& face : cell->face_iterators())
+      if (face->at_boundary())
+      {
+        const BoundaryCurve* curve = geometry.curve(face->boundary_id());
+        if (curve != nullptr && curve->circle)
+        {
+          face->set_manifold_id(curve->id);
+          cell->set_manifold_id(SphereMeshIds::interior_manifold);
+        }
+      }
 
   for (const BoundaryCurve& curve : geometry.curves)
     if (curve.circle)

@@ -70,7 +70,7 @@ typename Simulation<dim>::State Simulation<dim>::current_state() const
 {
   return {problem->stepper->state(),
           problem->contact->state(),
-          problem->solver->tangent_scale(),
+          problem->solver->tangent_scales(),
           problem->impulses->ledger()};
 }
 
@@ -78,7 +78,7 @@ template <int dim>
 void Simulation<dim>::restore(const State& state)
 {
   problem->stepper->state() = state.step;
-  problem->solver->set_tangent_scale(state.tangent_scale);
+  problem->solver->set_tangent_scales(state.tangent_scales);
   problem->impulses->ledger() = state.impulses;
   problem->contact->restore(state.contact);
 }
@@ -140,7 +140,7 @@ template <class Archive>
 void Simulation<dim>::serialize_state(Archive& archive)
 {
   typename ContactConstraints<dim>::State contact_state = problem->contact->state();
-  double tangent_scale                                  = problem->solver->tangent_scale();
+  TangentScales tangent_scales                          = problem->solver->tangent_scales();
   archive& time;
   archive & problem->stepper->state();
   archive& contact_state.active;
@@ -150,11 +150,11 @@ void Simulation<dim>::serialize_state(Archive& archive)
   archive&* controller;
   archive&* recorder;
   archive& progress;
-  archive& tangent_scale;
+  archive& tangent_scales;
   if (Archive::is_loading::value)
   {
     problem->contact->restore(contact_state);
-    problem->solver->set_tangent_scale(tangent_scale);
+    problem->solver->set_tangent_scales(tangent_scales);
   }
 }
 

@@ -86,7 +86,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
   // The first evaluation of a step (the initial guess, which often is the answer, e.g. in free
   // flight) skips the tangent if an earlier step has supplied the tangent's diagonal for the force
   // scale.
-  bool with_tangent = residual.tangent_scale() == 0.;
+  bool with_tangent = residual.tangent_scales().largest_diagonal == 0.;
   for (;;)
   {
     // An initial guess with active pairs is never the answer (has_converged() asks for a linear

@@ -6,7 +6,6 @@
 
 #include <Amesos.h>
 #include <Amesos_BaseSolver.h>
-#include <Amesos_Mumps.h>
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
 #include <Teuchos_ParameterList.hpp>
@@ -23,11 +22,6 @@ const NameTable<DirectSolverPackage>& direct_solver_names()
 
 namespace
 {
-const char* amesos_name(const DirectSolverPackage package)
-{
-  return package == DirectSolverPackage::mumps ? "Amesos_Mumps" : "Amesos_Klu";
-}
-
 /** Calls f(global row, global column, value) for every entry of this rank's rows of `matrix`. */
 template <typename Function>
 void for_each_entry(const Epetra_CrsMatrix& matrix, const Function& f)
@@ -53,7 +47,7 @@ void check(const int error_code, const char* package, const char* phase)
 } // namespace
 
 DirectSolver::DirectSolver(const DirectSolverPackage package, const MPI_Comm communicator)
-    : package(package)
+    : package(package), communicator(communicator)
 {
   if (package == DirectSolverPackage::umfpack &&
       dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
@@ -90,12 +84,19 @@ void DirectSolver::factorize(const TrilinosWrappers::SparseMatrix& matrix)
       throw SolverFailure(std::string("the direct solver (UMFPACK) failed: ") + error.what());
     }
   }
+  else if (package == DirectSolverPackage::mumps)
+  {
+    if (!mumps)
+      mumps = std::make_unique<MumpsSolver>(communicator);
+    mumps->factorize(matrix.trilinos_matrix());
+  }
   else
   {
-    const char* name = amesos_name(package);
+    const char* name = "Amesos_Klu";
     if (!amesos)
     {
-      problem = std::make_unique<Epetra_LinearProblem>();
+      locally_owned_rows = matrix.locally_owned_range_indices();
+      problem            = std::make_unique<Epetra_LinearProblem>();
       problem->SetOperator(const_cast<Epetra_CrsMatrix*>(&matrix.trilinos_matrix()));
       Amesos factory;
       amesos.reset(factory.Create(name, *problem));
@@ -103,11 +104,6 @@ void DirectSolver::factorize(const TrilinosWrappers::SparseMatrix& matrix)
         throw SolverFailure(std::string("the direct solver ") + name + " is not available");
       Teuchos::ParameterList parameters;
       check(amesos->SetParameters(parameters), name, "setup");
-      // MUMPS orders with METIS (ICNTL(7) = 5) rather than its automatic choice: the
-      // factorizations of the two-sphere meshes took 13 % (56k DoFs) and 18 % (223k) less time,
-      // measured back to back (SCOTCH as METIS, PORD 24 % more).
-      if (auto* mumps = dynamic_cast<Amesos_Mumps*>(amesos.get()))
-        mumps->SetICNTL(7, 5);
       check(amesos->SymbolicFactorization(), name, "symbolic factorization");
     }
     check(amesos->NumericFactorization(), name, "numeric factorization");
@@ -115,23 +111,31 @@ void DirectSolver::factorize(const TrilinosWrappers::SparseMatrix& matrix)
   ++factorizations;
 }
 
-void DirectSolver::solve(const TrilinosWrappers::MPI::Vector& right_hand_side,
-                         TrilinosWrappers::MPI::Vector& solution)
+Vector<double> DirectSolver::solve(const Vector<double>& right_hand_side)
 {
   if (package == DirectSolverPackage::umfpack)
   {
-    Vector<double> serial(right_hand_side.size());
-    for (const auto i : right_hand_side.locally_owned_elements())
-      serial[i] = right_hand_side[i];
-    umfpack.solve(serial);
-    for (const auto i : solution.locally_owned_elements())
-      solution[i] = serial[i];
-    solution.compress(VectorOperation::insert);
-    return;
+    Vector<double> solution = right_hand_side;
+    umfpack.solve(solution);
+    return solution;
   }
-  problem->SetLHS(&solution.trilinos_vector());
-  problem->SetRHS(const_cast<Epetra_MultiVector*>(
-      static_cast<const Epetra_MultiVector*>(&right_hand_side.trilinos_vector())));
-  check(amesos->Solve(), amesos_name(package), "solve");
+  if (package == DirectSolverPackage::mumps)
+    return mumps->solve(right_hand_side);
+  TrilinosWrappers::MPI::Vector distributed_rhs(locally_owned_rows, communicator);
+  TrilinosWrappers::MPI::Vector distributed_solution(locally_owned_rows, communicator);
+  for (const auto row : locally_owned_rows)
+    distributed_rhs[row] = right_hand_side[row];
+  distributed_rhs.compress(VectorOperation::insert);
+  problem->SetLHS(&distributed_solution.trilinos_vector());
+  problem->SetRHS(&distributed_rhs.trilinos_vector());
+  check(amesos->Solve(), "Amesos_Klu", "solve");
+  // Every rank needs the whole solution: import all entries.
+  TrilinosWrappers::MPI::Vector whole(
+      locally_owned_rows, complete_index_set(right_hand_side.size()), communicator);
+  whole = distributed_solution;
+  Vector<double> solution(right_hand_side.size());
+  for (types::global_dof_index i = 0; i < solution.size(); ++i)
+    solution[i] = whole[i];
+  return solution;
 }
 } // namespace dyncontact

@@ -75,7 +75,7 @@ void DynamicResidual<dim>::assemble(const Step& step,
   if (tangent != nullptr)
   {
     tangent->finish_assembly();
-    largest_tangent_diagonal = tangent->largest_displacement_diagonal();
+    scales = tangent->displacement_scales();
   }
 }
 
@@ -100,9 +100,9 @@ DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double
   // of the size eps max diag(K_eff) |u|), which no tolerance can go under.
   figures.reference_force =
       internal_force_values.l2_norm() + step.external_force.l2_norm() + contact_force.l2_norm();
-  figures.round_off_floor = roundoff_factor * (largest_tangent_diagonal * displacement.l2_norm() +
-                                               inertia_force.l2_norm());
-  figures.force_residual  = std::sqrt(force_residual_squared);
+  figures.round_off_floor =
+      roundoff_factor * (scales.largest_row_sum * displacement.l2_norm() + inertia_force.l2_norm());
+  figures.force_residual       = std::sqrt(force_residual_squared);
   const MultiplierBlock& block = contact.multiplier_block();
   for (unsigned int k = 0; k < block.n_pairs(); ++k)
     for (unsigned int c = 0; c < block.n_components(k); ++c)
@@ -115,7 +115,7 @@ DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double
   double constraint_force_squared = 0.;
   for (unsigned int k = 0; k < block.n_pairs(); ++k)
     for (unsigned int c = 0; c < block.n_components(k); ++c)
-      constraint_force_squared += std::pow((contact.is_active(k) ? largest_tangent_diagonal : 1.) *
+      constraint_force_squared += std::pow((contact.is_active(k) ? scales.largest_diagonal : 1.) *
                                                constraint_residual[block.index(k, c)],
                                            2);
   figures.merit = std::sqrt(force_residual_squared + constraint_force_squared);

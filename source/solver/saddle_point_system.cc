@@ -152,12 +152,31 @@ void SaddlePointSystem<dim>::finish_assembly()
 }
 
 template <int dim>
-double SaddlePointSystem<dim>::largest_displacement_diagonal() const
+TangentScales SaddlePointSystem<dim>::displacement_scales() const
 {
-  double largest_diagonal = 0.;
-  for (const auto row : locally_owned_dofs)
-    largest_diagonal = std::max(largest_diagonal, std::abs(system_matrix.diag_element(row)));
-  return Utilities::MPI::max(largest_diagonal, communicator);
+  TangentScales scales;
+  const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
+  for (int row = 0; row < matrix.NumMyRows(); ++row)
+  {
+    const auto global_row = TrilinosWrappers::global_row_index(matrix, row);
+    if (static_cast<types::global_dof_index>(global_row) >= n_dofs)
+      continue; // a multiplier row
+    int n_entries;
+    double* values;
+    int* columns;
+    matrix.ExtractMyRowView(row, n_entries, values, columns);
+    double row_sum = 0.;
+    for (int k = 0; k < n_entries; ++k)
+    {
+      row_sum += std::abs(values[k]);
+      if (TrilinosWrappers::global_column_index(matrix, columns[k]) == global_row)
+        scales.largest_diagonal = std::max(scales.largest_diagonal, std::abs(values[k]));
+    }
+    scales.largest_row_sum = std::max(scales.largest_row_sum, row_sum);
+  }
+  scales.largest_diagonal = Utilities::MPI::max(scales.largest_diagonal, communicator);
+  scales.largest_row_sum  = Utilities::MPI::max(scales.largest_row_sum, communicator);
+  return scales;
 }
 
 template <int dim>
@@ -293,7 +312,7 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
   {
     return LowRankUpdate(columns_u,
                          std::move(columns_v),
-                         [this](const Vector<double>& b) { return solve_with_factors(b); });
+                         [this](const Vector<double>& b) { return direct_solver.solve(b); });
   }
   catch (const SolverFailure&)
   {
@@ -304,27 +323,8 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
 template <int dim>
 Vector<double> SaddlePointSystem<dim>::solve(const Vector<double>& right_hand_side)
 {
-  Vector<double> solution = solve_with_factors(right_hand_side);
+  Vector<double> solution = direct_solver.solve(right_hand_side);
   return low_rank ? low_rank->correct(solution) : solution;
-}
-
-template <int dim>
-Vector<double> SaddlePointSystem<dim>::solve_with_factors(const Vector<double>& right_hand_side)
-{
-  TrilinosWrappers::MPI::Vector distributed_rhs(locally_owned_rows, communicator);
-  TrilinosWrappers::MPI::Vector distributed_solution(locally_owned_rows, communicator);
-  for (const auto row : locally_owned_rows)
-    distributed_rhs[row] = right_hand_side[row];
-  distributed_rhs.compress(VectorOperation::insert);
-  direct_solver.solve(distributed_rhs, distributed_solution);
-  // Every rank needs the whole solution: import all entries.
-  TrilinosWrappers::MPI::Vector whole(
-      locally_owned_rows, complete_index_set(right_hand_side.size()), communicator);
-  whole = distributed_solution;
-  Vector<double> solution(right_hand_side.size());
-  for (types::global_dof_index i = 0; i < solution.size(); ++i)
-    solution[i] = whole[i];
-  return solution;
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(SaddlePointSystem)

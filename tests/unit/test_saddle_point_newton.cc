@@ -282,7 +282,9 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePoint)
     const auto assemble = [&](const double scale)
     { assemble_known_system(springs, scale, 1., system); };
     assemble(1.);
-    EXPECT_EQ(system.largest_displacement_diagonal(), 4.);
+    // Rows a and b: 4 on the diagonal and the coupling 1 to the multiplier; the fixed rows: 2.
+    EXPECT_EQ(system.displacement_scales().largest_diagonal, 4.);
+    EXPECT_EQ(system.displacement_scales().largest_row_sum, 5.);
 
     Vector<double> right_hand_side(lambda + 1);
     right_hand_side[a]       = 2.;
@@ -400,7 +402,9 @@ TEST(SaddlePointNewton, ActiveConstraintInOneLinearSolve)
   EXPECT_NEAR(springs.solver->internal_force()[springs.a], 3. * 0.25, tolerance);
   EXPECT_NEAR(springs.solver->internal_force()[springs.b], 3. * -0.25, tolerance);
   EXPECT_NEAR(springs.solver->strain_energy(), 3. * 0.0625, tolerance);
-  EXPECT_NEAR(springs.solver->tangent_scale(), 4., tolerance);
+  // K_eff at a and b: stiffness 3 plus c m = 1 on the diagonal, and the pair's coupling 1.
+  EXPECT_NEAR(springs.solver->tangent_scales().largest_diagonal, 4., tolerance);
+  EXPECT_NEAR(springs.solver->tangent_scales().largest_row_sum, 5., tolerance);
 
   // From its own answer the step still makes one linear solve: an active pair's residual can look
   // converged only because the multiplier of the last solve still balances it.

@@ -36,9 +36,10 @@ constexpr types::boundary_id surface(const unsigned int body)
 }
 
 /**
- * Manifold id of the TransfiniteInterpolationManifold on every cell and interior face of every
- * body; it blends the curved boundaries into the interior on refinement and for higher-order
- * mappings. The axis faces and straight boundary curves are flat (numbers::flat_manifold_id).
+ * Manifold id of the TransfiniteInterpolationManifold on the cells with a face on a circular
+ * boundary curve; it blends the curve into the cell on refinement and for higher-order mappings.
+ * Every other cell, the interior faces, the axis faces and the straight boundary curves are flat
+ * (numbers::flat_manifold_id).
  */
 constexpr types::manifold_id interior_manifold = 0;
 } // namespace SphereMeshIds
@@ -105,9 +106,10 @@ struct MeshGeometry
  *    1e-6 of the curve's length from the best-fit line; flat faces). The line test comes first: a
  *    straight segment, however short, is never taken for a circle, and only an arc that bends
  *    by more than the line tolerance can be one.
- * Every boundary face belongs to one of these curves. The cells and interior faces get a
- * TransfiniteInterpolationManifold (SphereMeshIds::interior_manifold). The sphere meshes have one
- * circle per body, curve b + 2 (SphereMeshIds::surface()), whose manifold id is thus b + 2.
+ * Every boundary face belongs to one of these curves. The cells with a face on a circle get a
+ * TransfiniteInterpolationManifold (SphereMeshIds::interior_manifold), the others are flat. The
+ * sphere meshes have one circle per body, curve b + 2 (SphereMeshIds::surface()), whose manifold
+ * id is thus b + 2.
  *
  * It is not a general mesh reader: meshes with triangles or other non-quadrilateral cells or with
  * boundaries of other shapes are rejected. Any problem with the file throws InputError, one line

@@ -134,7 +134,7 @@ private:
   {
     StepState step;
     typename ContactConstraints<dim>::State contact;
-    double tangent_scale; ///< the solver's, see ContactNewtonSolver::tangent_scale()
+    TangentScales tangent_scales; ///< the solver's, see ContactNewtonSolver::tangent_scales()
     typename BodyImpulses<dim>::Ledger impulses;
   };
   State current_state() const;

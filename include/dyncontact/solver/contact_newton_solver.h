@@ -118,12 +118,12 @@ public:
   const Vector<double>& last_residual() const { return residual.force_rows(); }
 
   /**
-   * max diag(K_eff) of the last tangent (0: none yet), which scales the round-off floor and decides
-   * whether a step's first evaluation needs a tangent; a checkpoint keeps it so that a resumed run
-   * repeats the uninterrupted one exactly.
+   * The scales of the last tangent (0: none yet), which scale the round-off floor and the merit
+   * and decide whether a step's first evaluation needs a tangent; a checkpoint keeps them so that
+   * a resumed run repeats the uninterrupted one exactly.
    */
-  double tangent_scale() const { return residual.tangent_scale(); }
-  void set_tangent_scale(const double scale) { residual.set_tangent_scale(scale); }
+  const TangentScales& tangent_scales() const { return residual.tangent_scales(); }
+  void set_tangent_scales(const TangentScales& scales) { residual.set_tangent_scales(scales); }
 
   /** The numeric factorizations so far (a matrix that did not change is not refactorized). */
   unsigned int n_factorizations() const { return system.n_factorizations(); }

@@ -9,7 +9,7 @@ enum class DirectSolverPackage
 {
   klu,     ///< Amesos KLU (Trilinos): any number of ranks, the matrix gathered to one
   umfpack, ///< UMFPACK (SuiteSparse, through deal.II): one rank only
-  mumps    ///< Amesos MUMPS (Trilinos): distributed
+  mumps    ///< MUMPS: symmetric LDL^T, distributed (MumpsSolver)
 };
 
 /** The names of Newton/direct solver (defined beside DirectSolver). */

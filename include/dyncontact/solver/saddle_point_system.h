@@ -19,6 +19,28 @@
 namespace dyncontact
 {
 /**
+ * The stiffness scales of an assembled K_eff (its displacement rows, constrained rows included),
+ * [force/length]; 0 before the first assembly.
+ */
+struct TangentScales
+{
+  /** max_i |K_ii|: turns a constraint row's gap into a force (the line search's merit). */
+  double largest_diagonal = 0.;
+  /**
+   * max_i sum_j |K_ij| (the infinity norm of those rows): the bound on the round-off of K u,
+   * |fl(K u) - K u| <= n eps |K| |u|, of which the residual's round-off floor is made.
+   */
+  double largest_row_sum = 0.;
+
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int)
+  {
+    archive& largest_diagonal;
+    archive& largest_row_sum;
+  }
+};
+
+/**
  * The linear system of one Newton iteration of a contact step: the symmetric saddle-point matrix
  * [K_eff, -G^T; -G, -D] of size (n_dofs + n_multipliers)^2, unknowns ordered as the n_dofs
  * displacement DoFs of the DoFHandler followed by the contact multipliers (MultiplierBlock; row
@@ -117,11 +139,8 @@ public:
    */
   void finish_assembly();
 
-  /**
-   * max |diag| over the displacement rows (index < n_dofs) of all ranks: the stiffness scale of
-   * the assembled K_eff (constrained rows included, with their diagonal). Collective.
-   */
-  double largest_displacement_diagonal() const;
+  /** The stiffness scales of the assembled K_eff, over all ranks. Collective. */
+  TangentScales displacement_scales() const;
 
   /**
    * A low-rank update serves a matrix whose changes since the last factorization lie in the rows
@@ -170,9 +189,6 @@ private:
    * (class documentation) and the update is well conditioned; empty otherwise. Collective.
    */
   std::optional<LowRankUpdate> low_rank_update_of_changes();
-
-  /** solution = A0^{-1} right_hand_side with the factors alone (whole vectors). */
-  Vector<double> solve_with_factors(const Vector<double>& right_hand_side);
 
   const MPI_Comm communicator;
   const types::global_dof_index n_dofs;

@@ -1,0 +1,73 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/vector.h>
+
+#include <memory>
+#include <vector>
+
+class Epetra_CrsMatrix;
+
+namespace dyncontact
+{
+/**
+ * MUMPS (5.5, its C interface) on a symmetric, possibly indefinite matrix: the LDL^T
+ * factorization with 1x1 and 2x2 pivots (MUMPS's SYM = 2), which needs half the flops and half
+ * the factor storage of the LU factorization that Amesos_Mumps makes (Amesos fixes SYM = 0).
+ * Measured on the 1.09M-DoF sphere impact (doc/performance.md).
+ *
+ * The matrix is given as a distributed Epetra matrix; each rank passes the entries of its rows on
+ * and above the diagonal (column >= row) to MUMPS as distributed assembled input (ICNTL(18) = 3),
+ * so no rank ever holds the whole matrix. The entries below the diagonal are not read: the matrix
+ * must be symmetric (SaddlePointSystem's is, by construction). The symbolic analysis (METIS
+ * ordering) is done on the first factorize() only; the sparsity pattern must then stay the same.
+ * Right-hand side and solution are whole vectors on every rank: MUMPS solves on the host (rank 0)
+ * with a centralized right-hand side, and the solution is broadcast.
+ *
+ * Errors of MUMPS (a singular matrix: INFOG(1) = -10; out of memory) are thrown as SolverFailure
+ * with MUMPS's error code; a factorization that ran out of its estimated workspace (INFOG(1) = -8
+ * or -9) is retried with twice the relaxation (ICNTL(14)), up to three times.
+ */
+class MumpsSolver
+{
+public:
+  /** Starts a MUMPS instance on all ranks of `communicator` (collective). */
+  explicit MumpsSolver(MPI_Comm communicator);
+
+  /** Ends the MUMPS instance (collective). */
+  ~MumpsSolver();
+
+  MumpsSolver(const MumpsSolver&)            = delete;
+  MumpsSolver& operator=(const MumpsSolver&) = delete;
+
+  /**
+   * The LDL^T factorization of the symmetric `matrix` (its upper triangle), after the symbolic
+   * analysis on the first call. Collective; throws SolverFailure.
+   */
+  void factorize(const Epetra_CrsMatrix& matrix);
+
+  /**
+   * matrix^{-1} right_hand_side with the last factorization; `right_hand_side` and the result are
+   * whole (all rows) on every rank. Collective; throws SolverFailure.
+   */
+  Vector<double> solve(const Vector<double>& right_hand_side);
+
+private:
+  /** The MUMPS instance (DMUMPS_STRUC_C), kept out of this header. */
+  struct Instance;
+
+  /** Runs MUMPS's `job` and throws SolverFailure naming `phase` if it failed. */
+  void run(int job, const char* phase);
+
+  const MPI_Comm communicator;
+  std::unique_ptr<Instance> instance;
+  /** This rank's entries on and above the diagonal, 1-based global indices, in row order. */
+  std::vector<int> rows, columns;
+  std::vector<double> values;
+  /** The right-hand side and then the solution, on the host (rank 0). */
+  std::vector<double> host_vector;
+  bool analysed = false;
+};
+} // namespace dyncontact

@@ -1,0 +1,119 @@
+// MumpsSolver (MUMPS's symmetric indefinite LDL^T) against a dense LU solve (Eigen) of the same
+// matrix: a saddle-point matrix [K, B^T; B, -D] of the contact problems' shape, K symmetric
+// positive definite and diagonally dominant (a 1D stiffness plus a mass-like diagonal), B two
+// constraint rows coupling a few DoFs, D = 0 on one row (a Lagrange multiplier) and a small
+// positive number on the other (a penalty row): indefinite, so LDL^T needs its 2x2 pivots. The
+// matrix is well conditioned (kappa < 100, entries O(1)): both solvers' forward errors are below
+// kappa n eps ~ 1e-13, so 1e-12 bounds their difference; a lost triangle (MUMPS summing both
+// triangles, or reading only the diagonal block) changes the answer by O(0.1). Also: new values on
+// the same pattern refactorize without a new analysis, and a singular matrix is a SolverFailure.
+#include <dyncontact/solver/mumps_solver.h>
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <gtest/gtest.h>
+
+namespace dyncontact::testing
+{
+namespace
+{
+constexpr double tolerance = 1e-12; // see the file comment
+constexpr unsigned int n   = 12;    // 10 displacement-like DoFs and 2 constraint rows
+
+/** The dense matrix of the file comment; `scale` varies the values on the same pattern. */
+Eigen::MatrixXd saddle_point_matrix(const double scale)
+{
+  Eigen::MatrixXd matrix = Eigen::MatrixXd::Zero(n, n);
+  for (unsigned int i = 0; i < 10; ++i)
+  {
+    matrix(i, i) = scale * (2. + 1. + 0.1 * i); // stiffness 2 on the diagonal, mass 1 + 0.1 i
+    if (i + 1 < 10)
+      matrix(i, i + 1) = matrix(i + 1, i) = -scale;
+  }
+  const double b[2][3]             = {{1., -0.5, 0.25}, {-1., 0.7, 0.3}};
+  const unsigned int coupled[2][3] = {{2, 3, 4}, {6, 7, 9}};
+  for (unsigned int row = 0; row < 2; ++row)
+    for (unsigned int k = 0; k < 3; ++k)
+      matrix(10 + row, coupled[row][k]) = matrix(coupled[row][k], 10 + row) = b[row][k];
+  matrix(11, 11) = -0.05; // the penalty row; row 10 keeps its zero diagonal
+  return matrix;
+}
+
+/** The Trilinos matrix with the pattern and values of `dense` (one rank). */
+void fill(const Eigen::MatrixXd& dense, TrilinosWrappers::SparseMatrix& matrix)
+{
+  if (matrix.m() == 0)
+  {
+    DynamicSparsityPattern pattern(n, n);
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        if (dense(i, j) != 0. || i == j)
+          pattern.add(i, j);
+    matrix.reinit(complete_index_set(n), complete_index_set(n), pattern, MPI_COMM_WORLD);
+  }
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < n; ++j)
+      if (dense(i, j) != 0. || i == j)
+        matrix.set(i, j, dense(i, j));
+  matrix.compress(VectorOperation::insert);
+}
+
+Vector<double> right_hand_side()
+{
+  Vector<double> rhs(n);
+  for (unsigned int i = 0; i < n; ++i)
+    rhs[i] = std::cos(1. + 2. * i);
+  return rhs;
+}
+
+double largest_difference_from_dense_solve(const Eigen::MatrixXd& dense,
+                                           const Vector<double>& solution)
+{
+  const Vector<double> rhs = right_hand_side();
+  const Eigen::VectorXd reference =
+      dense.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(rhs.data(), n));
+  double largest = 0.;
+  for (unsigned int i = 0; i < n; ++i)
+    largest = std::max(largest, std::abs(solution[i] - reference(i)));
+  return largest;
+}
+} // namespace
+
+TEST(MumpsSolver, SolvesASymmetricIndefiniteSaddlePointSystemLikeDenseLU)
+{
+  TrilinosWrappers::SparseMatrix matrix;
+  MumpsSolver solver(MPI_COMM_WORLD);
+  for (const double scale : {1., 1.7}) // the second refactorizes on the analysed pattern
+  {
+    const Eigen::MatrixXd dense = saddle_point_matrix(scale);
+    fill(dense, matrix);
+    solver.factorize(matrix.trilinos_matrix());
+    EXPECT_LT(largest_difference_from_dense_solve(dense, solver.solve(right_hand_side())),
+              tolerance)
+        << "scale " << scale;
+  }
+}
+
+TEST(MumpsSolver, SingularMatrixIsASolverFailureNamingMumps)
+{
+  Eigen::MatrixXd dense = saddle_point_matrix(1.);
+  dense.row(11).setZero(); // the penalty row and column become zero: singular
+  dense.col(11).setZero();
+  TrilinosWrappers::SparseMatrix matrix;
+  fill(dense, matrix);
+  MumpsSolver solver(MPI_COMM_WORLD);
+  try
+  {
+    solver.factorize(matrix.trilinos_matrix());
+    FAIL() << "a singular matrix was factorized";
+  }
+  catch (const SolverFailure& failure)
+  {
+    EXPECT_NE(std::string(failure.what()).find("MUMPS"), std::string::npos) << failure.what();
+  }
+}
+} // namespace dyncontact::testing
