@@ -82,6 +82,7 @@ void RunProgress::report(const unsigned int nominal_step,
 void RunProgress::report_totals(const unsigned int factorizations,
                                 const unsigned int low_rank_updates,
                                 const std::map<std::string, double>& phases,
+                                const Utilities::MPI::MinMaxAvg& peak_memory,
                                 const std::string& directory) const
 {
   log << "dyncontact: done, " << n_steps << " steps (" << steps_taken << " taken, " << total_cuts
@@ -102,6 +103,9 @@ void RunProgress::report_totals(const unsigned int factorizations,
         << 1e3 * step_wall[in_contact] / std::max(step_count[in_contact], 1u) << " ms "
         << (in_contact ? "with" : "without") << " active pairs (" << step_count[in_contact]
         << " steps)";
-  log << "\n";
+  log << "\ndyncontact: peak memory per rank " << std::fixed << std::setprecision(1)
+      << peak_memory.max << " MiB (largest, rank " << peak_memory.max_index << "), "
+      << peak_memory.min << " MiB (smallest), " << peak_memory.avg << " MiB (mean)"
+      << std::defaultfloat << std::setprecision(6) << "\n";
 }
 } // namespace dyncontact

@@ -306,9 +306,12 @@ void Simulation<dim>::finish()
       std::all_of(active.begin(), active.end(), [](double n) { return n == 0.; }))
     log << "WARNING: no contact pair closed during the run (" << problem->contact->n_pairs()
         << " candidates): check the initial velocities' directions, the gap and the end time.\n";
+  Utilities::System::MemoryStats memory;
+  Utilities::System::get_memory_stats(memory); // VmHWM: this rank's peak resident memory [kB]
   progress.report_totals(n_factorizations(),
                          problem->solver->n_low_rank_updates(),
                          timer.get_summary_data(TimerOutput::total_wall_time),
+                         Utilities::MPI::min_max_avg(memory.VmHWM / 1024., MPI_COMM_WORLD),
                          parameters.output.directory);
 }
 

@@ -3,6 +3,7 @@
 #include <dyncontact/base/global.h>
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/mpi.h>
 
 #include <boost/serialization/string.hpp>
 #include <boost/serialization/vector.hpp>
@@ -57,11 +58,13 @@ public:
 
   /**
    * The run's last lines: steps, cuts, solves (`factorizations`, `low_rank_updates`), the wall
-   * time and its `phases` [s], the `directory` of the results and the cost per step.
+   * time and its `phases` [s], the `directory` of the results, the cost per step and the peak
+   * resident memory of the ranks, `peak_memory` [MiB] (largest with its rank, smallest, mean).
    */
   void report_totals(unsigned int factorizations,
                      unsigned int low_rank_updates,
                      const std::map<std::string, double>& phases,
+                     const Utilities::MPI::MinMaxAvg& peak_memory,
                      const std::string& directory) const;
 
   /** The counts (checkpoint). */

@@ -21,8 +21,9 @@ namespace dyncontact
  * The matrix is given as a distributed Epetra matrix; each rank passes the entries of its rows on
  * and above the diagonal (column >= row) to MUMPS as distributed assembled input (ICNTL(18) = 3),
  * so no rank ever holds the whole matrix. The entries below the diagonal are not read: the matrix
- * must be symmetric (SaddlePointSystem's is, by construction). The symbolic analysis (METIS
- * ordering) is done on the first factorize() only; the sparsity pattern must then stay the same.
+ * must be symmetric (SaddlePointSystem's is, by construction). The symbolic analysis is done on
+ * the first factorize() only, in the pivot order of METIS's nested dissection (METIS_NodeND,
+ * computed on rank 0 from the gathered graph); the sparsity pattern must then stay the same.
  * Right-hand side and solution are whole vectors on every rank: MUMPS solves on the host (rank 0)
  * with a centralized right-hand side, and the solution is broadcast.
  *
