@@ -1,4 +1,5 @@
 #include <dyncontact/solver/direct_solver.h>
+#include <dyncontact/solver/epetra_entries.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -22,21 +23,6 @@ const NameTable<DirectSolverPackage>& direct_solver_names()
 
 namespace
 {
-/** Calls f(global row, global column, value) for every entry of this rank's rows of `matrix`. */
-template <typename Function>
-void for_each_entry(const Epetra_CrsMatrix& matrix, const Function& f)
-{
-  for (int row = 0; row < matrix.NumMyRows(); ++row)
-  {
-    int n_entries;
-    double* values;
-    int* columns;
-    matrix.ExtractMyRowView(row, n_entries, values, columns);
-    for (int k = 0; k < n_entries; ++k)
-      f(matrix.GRID64(row), matrix.GCID64(columns[k]), values[k]);
-  }
-}
-
 /** Throws SolverFailure if an Amesos call returned an error code. */
 void check(const int error_code, const char* package, const char* phase)
 {

@@ -1,6 +1,6 @@
+#include <dyncontact/solver/epetra_entries.h>
 #include <dyncontact/solver/mumps_solver.h>
 
-#include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
 #include <metis.h>
 #include <numeric>
@@ -131,26 +131,18 @@ void MumpsSolver::factorize(const Epetra_CrsMatrix& matrix)
 {
   const bool first = !analysed;
   values.clear();
-  for (int row = 0; row < matrix.NumMyRows(); ++row)
-  {
-    int n_entries;
-    double* row_values;
-    int* row_columns;
-    matrix.ExtractMyRowView(row, n_entries, row_values, row_columns);
-    const long long global_row = matrix.GRID64(row);
-    for (int k = 0; k < n_entries; ++k)
-    {
-      const long long global_column = matrix.GCID64(row_columns[k]);
-      if (global_column < global_row)
-        continue;
-      if (first)
-      {
-        rows.push_back(static_cast<int>(global_row + 1));
-        columns.push_back(static_cast<int>(global_column + 1));
-      }
-      values.push_back(row_values[k]);
-    }
-  }
+  for_each_entry(matrix,
+                 [&](const long long row, const long long column, const double value)
+                 {
+                   if (column < row)
+                     return;
+                   if (first)
+                   {
+                     rows.push_back(static_cast<int>(row + 1));
+                     columns.push_back(static_cast<int>(column + 1));
+                   }
+                   values.push_back(value);
+                 });
   AssertDimension(values.size(), rows.size());
   instance->a_loc = values.data();
   if (first)
