@@ -83,6 +83,8 @@ void ContactProblem<dim>::log_summary(const ConditionalOStream& log) const
         << " is not a multiple of the time step; the run ends at t = " << n_steps * dt << "\n";
   if (log.is_active())
     model.print_summary(log.get_stream(), dt);
+  log << "  direct solver " << direct_solver_names().name(parameters.newton.direct_solver)
+      << ": symbolic analysis of the fixed pattern " << solver->analysis_time() << " s\n";
   log << "  highest mode (element eigenvalue bound): omega_max dt = " << highest_frequency * dt;
   if (std::isfinite(integrator.stability_limit()))
     log << ", stability limit " << integrator.stability_limit();

@@ -45,20 +45,47 @@ DirectSolver::DirectSolver(const DirectSolverPackage package, const MPI_Comm com
 
 DirectSolver::~DirectSolver() = default;
 
-void DirectSolver::factorize(const TrilinosWrappers::SparseMatrix& matrix)
+void DirectSolver::analyse(const TrilinosWrappers::SparseMatrix& matrix)
 {
+  Assert(!analysed, ExcMessage("DirectSolver::analyse() is called once"));
+  const Epetra_CrsMatrix& epetra = matrix.trilinos_matrix();
   if (package == DirectSolverPackage::umfpack)
   {
-    const Epetra_CrsMatrix& epetra = matrix.trilinos_matrix();
-    if (serial_pattern.empty())
-    {
-      DynamicSparsityPattern pattern(matrix.m(), matrix.n());
-      for_each_entry(epetra,
-                     [&](const auto row, const auto column, double) { pattern.add(row, column); });
-      serial_pattern.copy_from(pattern);
-      serial_matrix.reinit(serial_pattern);
-    }
+    DynamicSparsityPattern pattern(matrix.m(), matrix.n());
     for_each_entry(epetra,
+                   [&](const auto row, const auto column, double) { pattern.add(row, column); });
+    serial_pattern.copy_from(pattern);
+    serial_matrix.reinit(serial_pattern);
+  }
+  else if (package == DirectSolverPackage::mumps)
+  {
+    mumps = std::make_unique<MumpsSolver>(communicator);
+    mumps->analyse(epetra);
+  }
+  else
+  {
+    const char* name   = "Amesos_Klu";
+    locally_owned_rows = matrix.locally_owned_range_indices();
+    problem            = std::make_unique<Epetra_LinearProblem>();
+    problem->SetOperator(const_cast<Epetra_CrsMatrix*>(&epetra));
+    Amesos factory;
+    amesos.reset(factory.Create(name, *problem));
+    if (!amesos)
+      throw SolverFailure(std::string("the direct solver ") + name + " is not available");
+    Teuchos::ParameterList parameters;
+    check(amesos->SetParameters(parameters), name, "setup");
+    check(amesos->SymbolicFactorization(), name, "symbolic factorization");
+  }
+  analysed = true;
+}
+
+void DirectSolver::factorize(const TrilinosWrappers::SparseMatrix& matrix)
+{
+  if (!analysed)
+    analyse(matrix);
+  if (package == DirectSolverPackage::umfpack)
+  {
+    for_each_entry(matrix.trilinos_matrix(),
                    [&](const auto row, const auto column, const double value)
                    { serial_matrix.set(row, column, value); });
     try
@@ -71,29 +98,9 @@ void DirectSolver::factorize(const TrilinosWrappers::SparseMatrix& matrix)
     }
   }
   else if (package == DirectSolverPackage::mumps)
-  {
-    if (!mumps)
-      mumps = std::make_unique<MumpsSolver>(communicator);
     mumps->factorize(matrix.trilinos_matrix());
-  }
   else
-  {
-    const char* name = "Amesos_Klu";
-    if (!amesos)
-    {
-      locally_owned_rows = matrix.locally_owned_range_indices();
-      problem            = std::make_unique<Epetra_LinearProblem>();
-      problem->SetOperator(const_cast<Epetra_CrsMatrix*>(&matrix.trilinos_matrix()));
-      Amesos factory;
-      amesos.reset(factory.Create(name, *problem));
-      if (!amesos)
-        throw SolverFailure(std::string("the direct solver ") + name + " is not available");
-      Teuchos::ParameterList parameters;
-      check(amesos->SetParameters(parameters), name, "setup");
-      check(amesos->SymbolicFactorization(), name, "symbolic factorization");
-    }
-    check(amesos->NumericFactorization(), name, "numeric factorization");
-  }
+    check(amesos->NumericFactorization(), "Amesos_Klu", "numeric factorization");
   ++factorizations;
 }
 
@@ -106,7 +113,7 @@ Vector<double> DirectSolver::solve(const Vector<double>& right_hand_side)
     return solution;
   }
   if (package == DirectSolverPackage::mumps)
-    return mumps->solve(right_hand_side);
+    return std::move(mumps->solve({right_hand_side}).front());
   TrilinosWrappers::MPI::Vector distributed_rhs(locally_owned_rows, communicator);
   TrilinosWrappers::MPI::Vector distributed_solution(locally_owned_rows, communicator);
   for (const auto row : locally_owned_rows)
@@ -123,5 +130,16 @@ Vector<double> DirectSolver::solve(const Vector<double>& right_hand_side)
   for (types::global_dof_index i = 0; i < solution.size(); ++i)
     solution[i] = whole[i];
   return solution;
+}
+
+std::vector<Vector<double>> DirectSolver::solve(const std::vector<Vector<double>>& right_hand_sides)
+{
+  if (package == DirectSolverPackage::mumps)
+    return mumps->solve(right_hand_sides);
+  std::vector<Vector<double>> solutions;
+  solutions.reserve(right_hand_sides.size());
+  for (const auto& right_hand_side : right_hand_sides)
+    solutions.push_back(solve(right_hand_side));
+  return solutions;
 }
 } // namespace dyncontact

@@ -1,6 +1,7 @@
 #include <dyncontact/solver/epetra_entries.h>
 #include <dyncontact/solver/mumps_solver.h>
 
+#include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
 #include <metis.h>
 #include <numeric>
@@ -9,6 +10,7 @@
 // MUMPS's documentation numbers its control and information arrays from 1.
 #define ICNTL(i) icntl[(i)-1]
 #define INFOG(i) infog[(i)-1]
+#define INFO(i) info[(i)-1]
 
 namespace dyncontact
 {
@@ -102,12 +104,12 @@ MumpsSolver::MumpsSolver(const MPI_Comm communicator)
   instance->ICNTL(2)  = -1;
   instance->ICNTL(3)  = -1;
   instance->ICNTL(4)  = 0;
-  instance->ICNTL(5)  = 0; // assembled matrix
-  instance->ICNTL(18) = 3; // distributed entries (each rank its rows)
-  instance->ICNTL(28) = 1; // sequential analysis, with:
-  instance->ICNTL(7)  = 1; // the pivot order given: METIS's nested dissection (factorize())
-  instance->ICNTL(20) = 0; // centralized dense right-hand side, on the host
-  instance->ICNTL(21) = 0; // centralized solution, on the host
+  instance->ICNTL(5)  = 0;  // assembled matrix
+  instance->ICNTL(18) = 3;  // distributed entries (each rank its rows)
+  instance->ICNTL(28) = 1;  // sequential analysis, with:
+  instance->ICNTL(7)  = 1;  // the pivot order given: METIS's nested dissection (analyse())
+  instance->ICNTL(20) = 10; // dense right-hand sides, distributed: each rank its matrix rows
+  instance->ICNTL(21) = 1;  // distributed solution: each rank the rows of its factors
 }
 
 MumpsSolver::~MumpsSolver()
@@ -127,40 +129,49 @@ void MumpsSolver::run(const int job, const char* phase)
                         (instance->INFOG(1) == -10 ? "; a singular matrix" : "") + ")");
 }
 
+void MumpsSolver::analyse(const Epetra_CrsMatrix& matrix)
+{
+  Assert(!analysed, ExcMessage("MumpsSolver::analyse() is called once"));
+  for_each_entry(matrix,
+                 [&](const long long row, const long long column, double)
+                 {
+                   if (column < row)
+                     return;
+                   rows.push_back(static_cast<int>(row + 1));
+                   columns.push_back(static_cast<int>(column + 1));
+                 });
+  instance->n = static_cast<MUMPS_INT>(matrix.NumGlobalRows64());
+  for (int i = 0; i < matrix.RowMap().NumMyElements(); ++i)
+    owned_rows.push_back(static_cast<MUMPS_INT>(matrix.RowMap().GID64(i) + 1));
+  instance->nnz_loc = static_cast<MUMPS_INT8>(rows.size());
+  instance->irn_loc = rows.data();
+  instance->jcn_loc = columns.data();
+  // Debian's MUMPS has no METIS or SCOTCH (ICNTL(7) = 3 or 5 silently fall back to AMF, as
+  // INFOG(7) = 2 shows); deal.II's METIS orders instead. Nested dissection suits 2D and 3D
+  // meshes: the factors and flops grow as n log n and n^1.5 in 2D.
+  const std::vector<int> perm_in =
+      nested_dissection_on_host(rows, columns, instance->n, communicator);
+  instance->perm_in = const_cast<int*>(perm_in.data());
+  // Distributed input (ICNTL(18) = 3) with a given order: the analysis reads no values.
+  instance->a_loc = nullptr;
+  run(1, "analysis");
+  instance->perm_in = nullptr; // read by the analysis only
+  analysed          = true;
+}
+
 void MumpsSolver::factorize(const Epetra_CrsMatrix& matrix)
 {
-  const bool first = !analysed;
+  if (!analysed)
+    analyse(matrix);
   values.clear();
   for_each_entry(matrix,
                  [&](const long long row, const long long column, const double value)
                  {
-                   if (column < row)
-                     return;
-                   if (first)
-                   {
-                     rows.push_back(static_cast<int>(row + 1));
-                     columns.push_back(static_cast<int>(column + 1));
-                   }
-                   values.push_back(value);
+                   if (column >= row)
+                     values.push_back(value);
                  });
   AssertDimension(values.size(), rows.size());
   instance->a_loc = values.data();
-  if (first)
-  {
-    instance->n       = static_cast<MUMPS_INT>(matrix.NumGlobalRows64());
-    instance->nnz_loc = static_cast<MUMPS_INT8>(rows.size());
-    instance->irn_loc = rows.data();
-    instance->jcn_loc = columns.data();
-    // Debian's MUMPS has no METIS or SCOTCH (ICNTL(7) = 3 or 5 silently fall back to AMF, as
-    // INFOG(7) = 2 shows); deal.II's METIS orders instead. Nested dissection suits 2D and 3D
-    // meshes: the factors and flops grow as n log n and n^1.5 in 2D.
-    const std::vector<int> perm_in =
-        nested_dissection_on_host(rows, columns, instance->n, communicator);
-    instance->perm_in = const_cast<int*>(perm_in.data());
-    run(1, "analysis");
-    instance->perm_in = nullptr; // read by the analysis only
-    analysed          = true;
-  }
   for (unsigned int attempt = 0;; ++attempt)
     try
     {
@@ -177,23 +188,64 @@ void MumpsSolver::factorize(const Epetra_CrsMatrix& matrix)
     }
 }
 
-Vector<double> MumpsSolver::solve(const Vector<double>& right_hand_side)
+std::vector<Vector<double>> MumpsSolver::solve(const std::vector<Vector<double>>& right_hand_sides)
 {
-  AssertDimension(right_hand_side.size(), static_cast<std::size_t>(instance->n));
-  const bool is_host = Utilities::MPI::this_mpi_process(communicator) == host;
-  if (is_host)
+  const auto k = right_hand_sides.size();
+  std::vector<Vector<double>> solutions(k, Vector<double>(instance->n));
+  if (k == 0)
+    return solutions;
+  // Distributed right-hand sides (ICNTL(20) = 10): this rank's rows of each column.
+  const auto n_rows = owned_rows.size();
+  std::vector<double> local_rhs(std::max<std::size_t>(n_rows, 1) * k);
+  for (std::size_t j = 0; j < k; ++j)
   {
-    host_vector.assign(right_hand_side.begin(), right_hand_side.end());
-    instance->rhs  = host_vector.data();
-    instance->nrhs = 1;
-    instance->lrhs = instance->n;
+    AssertDimension(right_hand_sides[j].size(), static_cast<std::size_t>(instance->n));
+    for (std::size_t i = 0; i < n_rows; ++i)
+      local_rhs[j * n_rows + i] = right_hand_sides[j][owned_rows[i] - 1];
   }
+  instance->nrhs     = static_cast<MUMPS_INT>(k);
+  instance->nloc_rhs = static_cast<MUMPS_INT>(n_rows);
+  instance->lrhs_loc = static_cast<MUMPS_INT>(std::max<std::size_t>(n_rows, 1));
+  instance->rhs_loc  = local_rhs.data();
+  instance->irhs_loc = owned_rows.data();
+  // Distributed solution (ICNTL(21) = 1): the rows MUMPS's factors put on this rank.
+  const int n_solution_rows = instance->INFO(23);
+  std::vector<double> local_solution(std::max(n_solution_rows, 1) * k);
+  std::vector<MUMPS_INT> solution_rows(std::max(n_solution_rows, 1));
+  instance->lsol_loc = std::max(n_solution_rows, 1);
+  instance->sol_loc  = local_solution.data();
+  instance->isol_loc = solution_rows.data();
   run(3, "solve");
-  Vector<double> solution(right_hand_side.size());
-  if (is_host)
-    std::copy(host_vector.begin(), host_vector.end(), solution.begin());
-  const int n = static_cast<int>(solution.size());
-  MPI_Bcast(solution.data(), n, MPI_DOUBLE, host, communicator);
-  return solution;
+  instance->rhs_loc  = nullptr; // the buffers end with this call
+  instance->sol_loc  = nullptr;
+  instance->isol_loc = nullptr;
+  // Every rank's rows of each solution to every rank (the rows partition 1..n).
+  const std::vector<int> counts = Utilities::MPI::all_gather(communicator, n_solution_rows);
+  std::vector<int> offsets(counts.size());
+  std::exclusive_scan(counts.begin(), counts.end(), offsets.begin(), 0);
+  std::vector<MUMPS_INT> all_rows(instance->n);
+  MPI_Allgatherv(solution_rows.data(),
+                 n_solution_rows,
+                 MPI_INT,
+                 all_rows.data(),
+                 counts.data(),
+                 offsets.data(),
+                 MPI_INT,
+                 communicator);
+  std::vector<double> all_values(instance->n);
+  for (std::size_t j = 0; j < k; ++j)
+  {
+    MPI_Allgatherv(&local_solution[j * instance->lsol_loc],
+                   n_solution_rows,
+                   MPI_DOUBLE,
+                   all_values.data(),
+                   counts.data(),
+                   offsets.data(),
+                   MPI_DOUBLE,
+                   communicator);
+    for (MUMPS_INT p = 0; p < instance->n; ++p)
+      solutions[j][all_rows[p] - 1] = all_values[p];
+  }
+  return solutions;
 }
 } // namespace dyncontact

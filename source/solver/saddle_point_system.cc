@@ -1,8 +1,8 @@
 #include <dyncontact/base/dimensions.h>
-#include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/solver/saddle_point_system.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/trilinos_index_access.h>
 #include <deal.II/lac/trilinos_vector.h>
@@ -67,6 +67,21 @@ DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,
       sparsity.add(row, entry->column());
   return sparsity;
 }
+
+/** A changed matrix entry: new - factorized value at (row, column); sent between ranks. */
+struct MatrixChange
+{
+  types::global_dof_index row, column;
+  double difference;
+
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& row;
+    archive& column;
+    archive& difference;
+  }
+};
 } // namespace
 
 template <int dim>
@@ -92,6 +107,10 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
       locally_owned_rows,
       written_rows_pattern(dof_handler, contact, locally_owned_rows, multiplier_rows_owner),
       communicator);
+  // The pattern is final: its symbolic analysis belongs to the set-up, not to the first step.
+  Timer timer(communicator, true);
+  direct_solver.analyse(system_matrix);
+  analysis_wall_time = timer.wall_time();
 }
 
 template <int dim>
@@ -243,14 +262,9 @@ SaddlePointSystem<dim>::update_factorization(const bool allow_low_rank, TimerOut
 template <int dim>
 std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes()
 {
-  // The changed entries (row, column, new - factorized) of this rank's rows; any change in the
-  // leading block, or a change that is not a number, calls for a factorization.
-  struct Change
-  {
-    types::global_dof_index row, column;
-    double difference;
-  };
-  std::vector<Change> changes;
+  // The changed entries of this rank's rows; any change in the leading block, or a change that is
+  // not a number, calls for a factorization.
+  std::vector<MatrixChange> changes;
   bool leading_block_changed     = false;
   const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
   std::size_t k                  = 0;
@@ -263,7 +277,7 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
     for (int i = 0; i < n_entries; ++i, ++k)
       if (served_values[k] != factorized_values[k])
       {
-        const Change change{
+        const MatrixChange change{
             static_cast<types::global_dof_index>(TrilinosWrappers::global_row_index(matrix, row)),
             static_cast<types::global_dof_index>(
                 TrilinosWrappers::global_column_index(matrix, columns[i])),
@@ -275,13 +289,14 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
   }
   if (Utilities::MPI::max(static_cast<int>(leading_block_changed), communicator) > 0)
     return {};
-  // The multipliers whose rows and columns hold the changes, on all ranks.
-  std::vector<types::global_dof_index> local_multipliers;
-  for (const Change& change : changes)
-    local_multipliers.push_back(change.row >= n_dofs ? change.row : change.column);
+  // Every rank builds the whole U and V from all ranks' changes (a few per multiplier).
+  std::vector<MatrixChange> all_changes;
+  for (const auto& rank_changes : Utilities::MPI::all_gather(communicator, changes))
+    all_changes.insert(all_changes.end(), rank_changes.begin(), rank_changes.end());
+  // The multipliers whose rows and columns hold the changes.
   std::vector<types::global_dof_index> multipliers;
-  for (const auto& rank_multipliers : Utilities::MPI::all_gather(communicator, local_multipliers))
-    multipliers.insert(multipliers.end(), rank_multipliers.begin(), rank_multipliers.end());
+  for (const MatrixChange& change : all_changes)
+    multipliers.push_back(change.row >= n_dofs ? change.row : change.column);
   std::sort(multipliers.begin(), multipliers.end());
   multipliers.erase(std::unique(multipliers.begin(), multipliers.end()), multipliers.end());
   if (multipliers.empty() || multipliers.size() > max_low_rank_multipliers)
@@ -290,29 +305,26 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
   // dA = sum_j e_j (row j of dA)^T + sum_j (column j of dA outside the rows j) e_j^T over the
   // multipliers j: U = [e_j, column_j], V = [row_j, e_j].
   const unsigned int m = multipliers.size();
-  const auto n_total   = system_matrix.m();
   const auto index_of  = [&](const types::global_dof_index row)
   { return std::lower_bound(multipliers.begin(), multipliers.end(), row) - multipliers.begin(); };
-  std::vector<Vector<double>> columns_u(2 * m, Vector<double>(n_total));
-  std::vector<Vector<double>> columns_v(2 * m, Vector<double>(n_total));
-  for (const Change& change : changes)
+  std::vector<Vector<double>> columns_u(2 * m, Vector<double>(system_matrix.m()));
+  std::vector<LowRankUpdate::SparseColumn> columns_v(2 * m);
+  for (const MatrixChange& change : all_changes)
     if (change.row >= n_dofs)
-      columns_v[index_of(change.row)][change.column] += change.difference;
+      columns_v[index_of(change.row)].emplace_back(change.column, change.difference);
     else
-      columns_u[m + index_of(change.column)][change.row] += change.difference;
-  for (auto* columns : {&columns_u, &columns_v})
-    for (auto& column : *columns)
-      sum_over_ranks(column, communicator);
+      columns_u[m + index_of(change.column)][change.row] = change.difference;
   for (unsigned int j = 0; j < m; ++j)
   {
-    columns_u[j][multipliers[j]]     = 1.;
-    columns_v[m + j][multipliers[j]] = 1.;
+    columns_u[j][multipliers[j]] = 1.;
+    columns_v[m + j]             = {{multipliers[j], 1.}};
   }
   try
   {
     return LowRankUpdate(columns_u,
                          std::move(columns_v),
-                         [this](const Vector<double>& b) { return direct_solver.solve(b); });
+                         [this](const std::vector<Vector<double>>& b)
+                         { return direct_solver.solve(b); });
   }
   catch (const SolverFailure&)
   {

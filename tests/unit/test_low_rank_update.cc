@@ -23,6 +23,16 @@ Vector<double> to_vector(const Eigen::VectorXd& values)
   return result;
 }
 
+/** The nonzero entries of `values`. */
+LowRankUpdate::SparseColumn to_sparse(const Eigen::VectorXd& values)
+{
+  LowRankUpdate::SparseColumn result;
+  for (unsigned int i = 0; i < values.size(); ++i)
+    if (values(i) != 0.)
+      result.emplace_back(i, values(i));
+  return result;
+}
+
 Eigen::VectorXd to_eigen(const Vector<double>& values)
 {
   Eigen::VectorXd result(values.size());
@@ -49,8 +59,13 @@ TEST(LowRankUpdate, SolvesTheUpdatedMatrixAsADirectSolveDoes)
   const unsigned int n     = 7;
   const Eigen::MatrixXd a0 = base_matrix(n);
   const Eigen::PartialPivLU<Eigen::MatrixXd> a0_lu(a0);
-  const LowRankUpdate::Solver solve_a0 = [&](const Vector<double>& b)
-  { return to_vector(a0_lu.solve(to_eigen(b))); };
+  const LowRankUpdate::Solver solve_a0 = [&](const std::vector<Vector<double>>& columns)
+  {
+    std::vector<Vector<double>> solutions;
+    for (const auto& b : columns)
+      solutions.push_back(to_vector(a0_lu.solve(to_eigen(b))));
+    return solutions;
+  };
   Eigen::VectorXd b(n);
   for (unsigned int i = 0; i < n; ++i)
     b(i) = std::cos(2. * i);
@@ -62,17 +77,18 @@ TEST(LowRankUpdate, SolvesTheUpdatedMatrixAsADirectSolveDoes)
       for (unsigned int j = 0; j < k; ++j)
       {
         u(i, j) = std::cos(0.3 + i + 2. * j);
-        v(i, j) = std::sin(0.7 + 2. * i + j);
+        v(i, j) = (i + j) % 3 == 0 ? 0. : std::sin(0.7 + 2. * i + j); // sparse, as in contact
       }
-    std::vector<Vector<double>> columns_u, columns_v;
+    std::vector<Vector<double>> columns_u;
+    std::vector<LowRankUpdate::SparseColumn> columns_v;
     for (unsigned int j = 0; j < k; ++j)
     {
       columns_u.push_back(to_vector(u.col(j)));
-      columns_v.push_back(to_vector(v.col(j)));
+      columns_v.push_back(to_sparse(v.col(j)));
     }
     const LowRankUpdate update(columns_u, columns_v, solve_a0);
     EXPECT_EQ(update.rank(), k);
-    const Vector<double> y         = solve_a0(to_vector(b));
+    const Vector<double> y         = solve_a0({to_vector(b)})[0];
     const Vector<double> x         = update.correct(y);
     const Eigen::VectorXd expected = (a0 + u * v.transpose()).fullPivLu().solve(b);
     double largest_correction      = 0.;
@@ -90,10 +106,9 @@ TEST(LowRankUpdate, SingularUpdateIsASolverFailure)
 {
   const unsigned int n = 3;
   Vector<double> e0(n);
-  e0[0]                   = 1.;
-  Vector<double> minus_e0 = e0;
-  minus_e0 *= -1.;
-  const LowRankUpdate::Solver identity = [](const Vector<double>& b) { return b; };
+  e0[0] = 1.;
+  const LowRankUpdate::SparseColumn minus_e0{{0, -1.}};
+  const LowRankUpdate::Solver identity = [](const std::vector<Vector<double>>& b) { return b; };
   try
   {
     const LowRankUpdate update({e0}, {minus_e0}, identity);

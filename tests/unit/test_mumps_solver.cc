@@ -6,7 +6,8 @@
 // matrix is well conditioned (kappa < 100, entries O(1)): both solvers' forward errors are below
 // kappa n eps ~ 1e-13, so 1e-12 bounds their difference; a lost triangle (MUMPS summing both
 // triangles, or reading only the diagonal block) changes the answer by O(0.1). Also: new values on
-// the same pattern refactorize without a new analysis, and a singular matrix is a SolverFailure.
+// the same pattern refactorize without a new analysis, several right-hand sides solved in one call
+// (NRHS > 1) each match the dense solve, and a singular matrix is a SolverFailure.
 #include <dyncontact/solver/mumps_solver.h>
 
 #include <deal.II/base/index_set.h>
@@ -62,18 +63,19 @@ void fill(const Eigen::MatrixXd& dense, TrilinosWrappers::SparseMatrix& matrix)
   matrix.compress(VectorOperation::insert);
 }
 
-Vector<double> right_hand_side()
+/** Right-hand side number `column`: a different smooth vector for each. */
+Vector<double> right_hand_side(const unsigned int column)
 {
   Vector<double> rhs(n);
   for (unsigned int i = 0; i < n; ++i)
-    rhs[i] = std::cos(1. + 2. * i);
+    rhs[i] = std::cos(1. + 2. * i + 0.9 * column);
   return rhs;
 }
 
 double largest_difference_from_dense_solve(const Eigen::MatrixXd& dense,
+                                           const Vector<double>& rhs,
                                            const Vector<double>& solution)
 {
-  const Vector<double> rhs = right_hand_side();
   const Eigen::VectorXd reference =
       dense.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(rhs.data(), n));
   double largest = 0.;
@@ -92,10 +94,26 @@ TEST(MumpsSolver, SolvesASymmetricIndefiniteSaddlePointSystemLikeDenseLU)
     const Eigen::MatrixXd dense = saddle_point_matrix(scale);
     fill(dense, matrix);
     solver.factorize(matrix.trilinos_matrix());
-    EXPECT_LT(largest_difference_from_dense_solve(dense, solver.solve(right_hand_side())),
-              tolerance)
+    const std::vector<Vector<double>> rhs = {right_hand_side(0)};
+    EXPECT_LT(largest_difference_from_dense_solve(dense, rhs[0], solver.solve(rhs)[0]), tolerance)
         << "scale " << scale;
   }
+}
+
+TEST(MumpsSolver, SolvesSeveralRightHandSidesInOneCall)
+{
+  TrilinosWrappers::SparseMatrix matrix;
+  MumpsSolver solver(MPI_COMM_WORLD);
+  const Eigen::MatrixXd dense = saddle_point_matrix(1.3);
+  fill(dense, matrix);
+  solver.factorize(matrix.trilinos_matrix());
+  const std::vector<Vector<double>> rhs = {
+      right_hand_side(0), right_hand_side(1), right_hand_side(2)};
+  const std::vector<Vector<double>> solutions = solver.solve(rhs);
+  ASSERT_EQ(solutions.size(), rhs.size());
+  for (unsigned int column = 0; column < rhs.size(); ++column)
+    EXPECT_LT(largest_difference_from_dense_solve(dense, rhs[column], solutions[column]), tolerance)
+        << "column " << column;
 }
 
 TEST(MumpsSolver, SingularMatrixIsASolverFailureNamingMumps)

@@ -131,6 +131,9 @@ public:
   /** The number of low-rank updates of a factorization so far (SaddlePointSystem). */
   unsigned int n_low_rank_updates() const { return system.n_low_rank_updates(); }
 
+  /** Wall time [s] of the direct solver's symbolic analysis (at construction). */
+  double analysis_time() const { return system.analysis_time(); }
+
   /** Strain energy at the same displacement as internal_force(). */
   double strain_energy() const { return residual.strain_energy(); }
 

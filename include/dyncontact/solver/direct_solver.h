@@ -21,9 +21,9 @@ namespace dyncontact
 /**
  * A sparse direct solver that keeps its factorization: factorize() factors a matrix, solve()
  * applies the factors to any number of right-hand sides until the next factorize(). The symbolic
- * analysis (ordering, elimination tree) is done on the first factorize() only: the matrix's
- * sparsity pattern must stay the same for the object's life (SaddlePointSystem's never changes);
- * its values may change between calls.
+ * analysis (ordering, elimination tree) of the matrix's sparsity pattern is done once, by
+ * analyse() or else on the first factorize(): the pattern must stay the same for the object's
+ * life (SaddlePointSystem's never changes); the values may change between calls.
  *
  * The matrix is distributed (Trilinos, rows as the matrix's); right-hand sides and solutions are
  * whole vectors (all rows) on every rank. The packages:
@@ -39,14 +39,29 @@ public:
 
   ~DirectSolver();
 
-  /** Numeric factorization of `matrix` (after the symbolic analysis on the first call). */
+  /**
+   * The symbolic analysis of `matrix`'s sparsity pattern (the values are not read), once, before
+   * the first factorize(): MUMPS orders (METIS) and analyses, KLU orders (AMD); UMFPACK, which
+   * analyses in every factorization, builds the pattern of its serial copy. Collective; throws
+   * SolverFailure.
+   */
+  void analyse(const TrilinosWrappers::SparseMatrix& matrix);
+
+  /** Numeric factorization of `matrix` (after analyse(), which it calls if it was not). */
   void factorize(const TrilinosWrappers::SparseMatrix& matrix);
 
   /**
    * matrix^{-1} right_hand_side with the last factorization; both whole (matrix.m() entries) on
-   * every rank. Collective.
+   * every rank. Collective; throws SolverFailure.
    */
   Vector<double> solve(const Vector<double>& right_hand_side);
+
+  /**
+   * matrix^{-1} b for each b of `right_hand_sides` (each whole on every rank). MUMPS solves all
+   * columns at once (the factors are read once; blocked, so equal to single solves to round-off);
+   * KLU and UMFPACK one column after the other. Collective; throws SolverFailure.
+   */
+  std::vector<Vector<double>> solve(const std::vector<Vector<double>>& right_hand_sides);
 
   /** The number of numeric factorizations so far. */
   unsigned int n_factorizations() const { return factorizations; }
@@ -57,12 +72,13 @@ private:
   unsigned int factorizations = 0;
   /** This rank's rows of the factorized matrix. */
   IndexSet locally_owned_rows;
+  bool analysed = false;
   /** Amesos (KLU): the problem holds the matrix; symbolic analysis once. */
   std::unique_ptr<Epetra_LinearProblem> problem;
   std::unique_ptr<Amesos_BaseSolver> amesos;
   /** MUMPS. */
   std::unique_ptr<MumpsSolver> mumps;
-  /** UMFPACK: a serial copy of the matrix, its pattern built on the first call. */
+  /** UMFPACK: a serial copy of the matrix, its pattern built by analyse(). */
   SparsityPattern serial_pattern;
   SparseMatrix<double> serial_matrix;
   SparseDirectUMFPACK umfpack;

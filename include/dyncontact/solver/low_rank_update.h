@@ -6,6 +6,7 @@
 
 #include <Eigen/Dense>
 #include <functional>
+#include <utility>
 #include <vector>
 
 namespace dyncontact
@@ -16,8 +17,9 @@ namespace dyncontact
  *
  *   x = y - Z (I_k + V^T Z)^{-1} V^T y,   y = A0^{-1} b,   Z = A0^{-1} U.
  *
- * Z (k solves with A0) and the LU factors of the k x k capacitance matrix I_k + V^T Z (Eigen) are
- * computed at construction; each correct() is then k dot products and k vector updates. It serves
+ * Z (one solve with A0 for k right-hand sides) and the LU factors of the k x k capacitance matrix
+ * I_k + V^T Z (Eigen) are computed at construction; each correct() is then k sparse dot products
+ * (V's columns are given by their nonzero entries) and k vector updates. It serves
  * SaddlePointSystem, whose matrix changes in a few multiplier rows and columns when contact pairs
  * enter or leave the active set: a rank-2 change per multiplier instead of a new factorization.
  * Vectors are whole (all n entries) on every MPI rank, so every rank computes the same x.
@@ -25,17 +27,21 @@ namespace dyncontact
 class LowRankUpdate
 {
 public:
-  /** y = A0^{-1} b for whole vectors of n entries. */
-  using Solver = std::function<Vector<double>(const Vector<double>&)>;
+  /** The columns A0^{-1} b of each column b (whole vectors of n entries), all in one call. */
+  using Solver = std::function<std::vector<Vector<double>>(const std::vector<Vector<double>>&)>;
+
+  /** A sparse column of n entries: its nonzero entries (row, value), each row once. */
+  using SparseColumn = std::vector<std::pair<types::global_dof_index, double>>;
 
   /**
-   * `columns_u` and `columns_v`: the k columns of U and V, n entries each (k >= 1, the same k).
-   * Calls `solve_a0` k times. Throws SolverFailure if the capacitance matrix is singular or so
-   * ill-conditioned (reciprocal condition number below 1e-12) that the formula would lose the
-   * solution's digits; the caller then factorizes A0 + U V^T itself.
+   * `columns_u`: the k columns of U (n entries each); `columns_v`: the k sparse columns of V
+   * (rows < n; k >= 1, the same k).
+   * Calls `solve_a0` once, with the k columns of U. Throws SolverFailure if the capacitance matrix
+   * is singular or so ill-conditioned (reciprocal condition number below 1e-12) that the formula
+   * would lose the solution's digits; the caller then factorizes A0 + U V^T itself.
    */
   LowRankUpdate(const std::vector<Vector<double>>& columns_u,
-                std::vector<Vector<double>> columns_v,
+                std::vector<SparseColumn> columns_v,
                 const Solver& solve_a0);
 
   /** x = (A0 + U V^T)^{-1} b from y = A0^{-1} b (n entries). */
@@ -46,7 +52,7 @@ public:
 
 private:
   std::vector<Vector<double>> columns_z;
-  std::vector<Vector<double>> columns_v;
+  std::vector<SparseColumn> columns_v;
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance;
 };
 } // namespace dyncontact

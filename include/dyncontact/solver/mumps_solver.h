@@ -21,11 +21,13 @@ namespace dyncontact
  * The matrix is given as a distributed Epetra matrix; each rank passes the entries of its rows on
  * and above the diagonal (column >= row) to MUMPS as distributed assembled input (ICNTL(18) = 3),
  * so no rank ever holds the whole matrix. The entries below the diagonal are not read: the matrix
- * must be symmetric (SaddlePointSystem's is, by construction). The symbolic analysis is done on
- * the first factorize() only, in the pivot order of METIS's nested dissection (METIS_NodeND,
- * computed on rank 0 from the gathered graph); the sparsity pattern must then stay the same.
- * Right-hand side and solution are whole vectors on every rank: MUMPS solves on the host (rank 0)
- * with a centralized right-hand side, and the solution is broadcast.
+ * must be symmetric (SaddlePointSystem's is, by construction). The symbolic analysis (analyse(),
+ * or the first factorize()) reads the sparsity pattern only, in the pivot order of METIS's nested
+ * dissection (METIS_NodeND, computed on rank 0 from the gathered graph); the pattern must then
+ * stay the same.
+ * Right-hand sides and solutions are whole vectors on every rank. MUMPS solves with them
+ * distributed (each rank passes its matrix rows of the right-hand sides and receives the rows of
+ * its factors), all columns of a call at once; the solutions are then gathered on every rank.
  *
  * Errors of MUMPS (a singular matrix: INFOG(1) = -10; out of memory) are thrown as SolverFailure
  * with MUMPS's error code; a factorization that ran out of its estimated workspace (INFOG(1) = -8
@@ -44,16 +46,24 @@ public:
   MumpsSolver& operator=(const MumpsSolver&) = delete;
 
   /**
-   * The LDL^T factorization of the symmetric `matrix` (its upper triangle), after the symbolic
-   * analysis on the first call. Collective; throws SolverFailure.
+   * The symbolic analysis of `matrix`'s pattern (its values are not read): METIS's pivot order and
+   * MUMPS's elimination tree and workspace estimates. Once, before any factorize() (which calls
+   * it if it was not). Collective; throws SolverFailure.
+   */
+  void analyse(const Epetra_CrsMatrix& matrix);
+
+  /**
+   * The LDL^T factorization of the symmetric `matrix` (its upper triangle), on the pattern of the
+   * analysis. Collective; throws SolverFailure.
    */
   void factorize(const Epetra_CrsMatrix& matrix);
 
   /**
-   * matrix^{-1} right_hand_side with the last factorization; `right_hand_side` and the result are
-   * whole (all rows) on every rank. Collective; throws SolverFailure.
+   * matrix^{-1} b for each b of `right_hand_sides` with the last factorization, in one MUMPS solve
+   * (NRHS = their number: the factors are read once for all). Each right-hand side and solution
+   * is whole (all n rows) on every rank. Collective; throws SolverFailure.
    */
-  Vector<double> solve(const Vector<double>& right_hand_side);
+  std::vector<Vector<double>> solve(const std::vector<Vector<double>>& right_hand_sides);
 
 private:
   /** The MUMPS instance (DMUMPS_STRUC_C), kept out of this header. */
@@ -67,8 +77,8 @@ private:
   /** This rank's entries on and above the diagonal, 1-based global indices, in row order. */
   std::vector<int> rows, columns;
   std::vector<double> values;
-  /** The right-hand side and then the solution, on the host (rank 0). */
-  std::vector<double> host_vector;
+  /** This rank's rows of the matrix, 1-based: its rows of the right-hand sides. */
+  std::vector<int> owned_rows;
   bool analysed = false;
 };
 } // namespace dyncontact

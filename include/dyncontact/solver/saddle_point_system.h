@@ -57,15 +57,16 @@ struct TangentScales
  * entries in rows owned elsewhere are sent on finish_assembly(). Vectors passed in and out are
  * whole (all n_dofs + n_multipliers entries) on every rank.
  *
- * The direct solve keeps its factorization (DirectSolver, symbolic analysis once for the fixed
- * pattern); update_factorization() brings it up to date with the assembled matrix at the least
- * cost, comparing the entries bit for bit with those factorized:
+ * The direct solve keeps its factorization (DirectSolver; the symbolic analysis of the fixed
+ * pattern is done by the constructor, in the set-up); update_factorization() brings it up to date
+ * with the assembled matrix at the least cost, comparing the entries bit for bit with those
+ * factorized:
  * - none changed (linear material, the same active set and pairs): the factors serve as they
  *   are, and the solution is the same to the last bit as with a fresh factorization;
  * - only entries in the rows and columns of at most max_low_rank_multipliers multipliers changed
  *   (pairs that entered or left the active set, with a linear material or a reused tangent): a
- *   LowRankUpdate of the factors (Sherman-Morrison-Woodbury; 2 solves per changed multiplier
- *   instead of a factorization, the solution equal to round-off);
+ *   LowRankUpdate of the factors (Sherman-Morrison-Woodbury; 2 right-hand sides per changed
+ *   multiplier, solved in one call, instead of a factorization; the solution equal to round-off);
  * - otherwise: a new numeric factorization.
  *
  * Constrained DoFs (u_i = 0: e.g. u_r on a symmetry axis, AffineConstraints) have their rows and
@@ -144,8 +145,8 @@ public:
 
   /**
    * A low-rank update serves a matrix whose changes since the last factorization lie in the rows
-   * and columns of at most this many multipliers (2 solves each: 8 solves cost about half a
-   * factorization of the 13k-DoF spheres).
+   * and columns of at most this many multipliers (2 right-hand sides each, solved in one call: 8
+   * single solves cost about half a factorization of the 13k-DoF spheres).
    */
   static constexpr unsigned int max_low_rank_multipliers = 4;
 
@@ -180,6 +181,9 @@ public:
   /** The number of low-rank updates so far. */
   unsigned int n_low_rank_updates() const { return low_rank_updates; }
 
+  /** Wall time [s] of the direct solver's symbolic analysis, done by the constructor. */
+  double analysis_time() const { return analysis_wall_time; }
+
 private:
   /** This rank's matrix entries, row by row. */
   std::vector<double> local_values() const;
@@ -208,5 +212,6 @@ private:
   /** The update from the factorized matrix to the served one, if it is not the factorized one. */
   std::optional<LowRankUpdate> low_rank;
   unsigned int low_rank_updates = 0;
+  double analysis_wall_time     = 0.;
 };
 } // namespace dyncontact
