@@ -8,8 +8,9 @@
 # Writes bench/results/large_sphere_ranks/ranks_N.{log,time} and prints a markdown table: wall
 # per contact step and its factorization share from dyncontact's last lines, peak resident memory
 # of the largest rank (dyncontact's VmHWM line) and its ratio to one rank. About 25 minutes for
-# 1 2 4 on 2 cores; set-up (meshing, caches) is about 2.5 minutes of each run and is not in the
-# per-step figure.
+# 1 2 4 on 2 cores; set-up (meshing, caches, the solver's symbolic analysis: METIS's order and
+# MUMPS's analysis, given in its own column) is about 1.5 to 2.5 minutes of each run and is not in
+# the per-step figure.
 #   bench/large_sphere_ranks.sh [RANKS...]
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
@@ -33,8 +34,8 @@ done
 /usr/bin/python3 - "$results" "${ranks_list[@]}" <<'EOF'
 import re, sys
 results, ranks_list = sys.argv[1], sys.argv[2:]
-print("| ranks | DoFs | wall per contact step | factorization | peak memory, largest rank | vs 1 rank | smallest rank |")
-print("|---|---|---|---|---|---|---|")
+print("| ranks | DoFs | wall per contact step | factorization | symbolic analysis (set-up) | peak memory, largest rank | vs 1 rank | smallest rank |")
+print("|---|---|---|---|---|---|---|---|")
 one = None
 for ranks in ranks_list:
     log = open(f"{results}/ranks_{ranks}.log").read()
@@ -42,9 +43,10 @@ for ranks in ranks_list:
     step = float(re.search(r"([\d.e+]+) ms with active pairs \((\d+) steps\)", log).group(1)) / 1e3
     n_steps = int(re.search(r"ms with active pairs \((\d+) steps\)", log).group(1))
     factorization = float(re.search(r"factorization ([\d.e+]+) s", log).group(1))
+    analysis = float(re.search(r"symbolic analysis of the fixed pattern ([\d.e+]+) s", log).group(1))
     largest, smallest = map(float, re.search(
         r"peak memory per rank ([\d.]+) MiB \(largest.*?([\d.]+) MiB \(smallest", log).groups())
     one = one or largest
-    print(f"| {ranks} | {dofs} | {step:.1f} s | {factorization / n_steps / step * 100:.0f} % | "
+    print(f"| {ranks} | {dofs} | {step:.1f} s | {factorization / n_steps / step * 100:.0f} % | {analysis:.1f} s | "
           f"{largest:.0f} MiB | {largest / one:.2f} | {smallest:.0f} MiB |")
 EOF
