@@ -81,6 +81,7 @@ void RunProgress::report(const unsigned int nominal_step,
 
 void RunProgress::report_totals(const unsigned int factorizations,
                                 const unsigned int low_rank_updates,
+                                const std::string& solver_statistics,
                                 const std::map<std::string, double>& phases,
                                 const Utilities::MPI::MinMaxAvg& peak_memory,
                                 const std::string& directory) const
@@ -107,5 +108,7 @@ void RunProgress::report_totals(const unsigned int factorizations,
       << peak_memory.max << " MiB (largest, rank " << peak_memory.max_index << "), "
       << peak_memory.min << " MiB (smallest), " << peak_memory.avg << " MiB (mean)"
       << std::defaultfloat << std::setprecision(6) << "\n";
+  if (!solver_statistics.empty())
+    log << "dyncontact: " << solver_statistics << "\n";
 }
 } // namespace dyncontact

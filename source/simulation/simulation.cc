@@ -310,6 +310,7 @@ void Simulation<dim>::finish()
   Utilities::System::get_memory_stats(memory); // VmHWM: this rank's peak resident memory [kB]
   progress.report_totals(n_factorizations(),
                          problem->solver->n_low_rank_updates(),
+                         problem->solver->last_factorization_statistics(),
                          timer.get_summary_data(TimerOutput::total_wall_time),
                          Utilities::MPI::min_max_avg(memory.VmHWM / 1024., MPI_COMM_WORLD),
                          parameters.output.directory);

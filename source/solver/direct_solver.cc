@@ -132,6 +132,11 @@ Vector<double> DirectSolver::solve(const Vector<double>& right_hand_side)
   return solution;
 }
 
+std::string DirectSolver::last_factorization_statistics() const
+{
+  return mumps ? mumps->last_factorization_statistics() : "";
+}
+
 std::vector<Vector<double>> DirectSolver::solve(const std::vector<Vector<double>>& right_hand_sides)
 {
   if (package == DirectSolverPackage::mumps)

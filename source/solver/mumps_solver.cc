@@ -3,14 +3,18 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
+#include <iomanip>
 #include <metis.h>
 #include <numeric>
+#include <sstream>
 #include <string>
 
 // MUMPS's documentation numbers its control and information arrays from 1.
 #define ICNTL(i) icntl[(i)-1]
 #define INFOG(i) infog[(i)-1]
 #define INFO(i) info[(i)-1]
+#define RINFOG(i) rinfog[(i)-1]
+#define RINFO(i) rinfo[(i)-1]
 
 namespace dyncontact
 {
@@ -176,6 +180,7 @@ void MumpsSolver::factorize(const Epetra_CrsMatrix& matrix)
     try
     {
       run(2, "numeric factorization");
+      busiest_rank_flops = Utilities::MPI::max(instance->RINFO(3), communicator);
       return;
     }
     catch (const SolverFailure&)
@@ -186,6 +191,22 @@ void MumpsSolver::factorize(const Epetra_CrsMatrix& matrix)
         throw;
       instance->ICNTL(14) = 2 * std::max(instance->ICNTL(14), 20);
     }
+}
+
+std::string MumpsSolver::last_factorization_statistics() const
+{
+  if (busiest_rank_flops == 0)
+    return "";
+  const double flops = instance->RINFOG(3);
+  std::ostringstream line;
+  line << std::setprecision(3) << "MUMPS, last factorization: " << flops << " flops, " << std::fixed
+       << std::setprecision(1) << 100 * busiest_rank_flops / flops
+       << " % of them on the busiest of " << Utilities::MPI::n_mpi_processes(communicator)
+       << " rank(s); " << std::defaultfloat << std::setprecision(3)
+       << static_cast<double>(instance->INFOG(29)) << " entries in the factors; "
+       << instance->INFOG(21) << " MB used on the largest rank, " << instance->INFOG(22)
+       << " MB on all";
+  return line.str();
 }
 
 std::vector<Vector<double>> MumpsSolver::solve(const std::vector<Vector<double>>& right_hand_sides)

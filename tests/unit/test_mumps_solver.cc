@@ -17,6 +17,7 @@
 #include <Eigen/Dense>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <regex>
 
 namespace dyncontact::testing
 {
@@ -114,6 +115,36 @@ TEST(MumpsSolver, SolvesSeveralRightHandSidesInOneCall)
   for (unsigned int column = 0; column < rhs.size(); ++column)
     EXPECT_LT(largest_difference_from_dense_solve(dense, rhs[column], solutions[column]), tolerance)
         << "column " << column;
+}
+
+// MUMPS's figures of the factorization, as MumpsSolver reports them, against bounds the matrix
+// gives: the factors hold at least the matrix's own upper triangle (12 diagonal, 9 tridiagonal and
+// 6 constraint entries: 27; fill only adds) and at most the dense triangle (n(n+1)/2 = 78); the
+// elimination takes at least one operation and at most a dense LDL^T's (about n^3/3 multiply-adds,
+// counted twice: 2 n^3 / 3 = 1152); one rank does all of it (100.0 %). A report that read the
+// wrong array (the analysis's estimates, another rank's share, memory as entries) leaves a range.
+TEST(MumpsSolver, ReportsTheFactorizationsFlopsFactorEntriesAndBalance)
+{
+  TrilinosWrappers::SparseMatrix matrix;
+  MumpsSolver solver(MPI_COMM_WORLD);
+  EXPECT_EQ(solver.last_factorization_statistics(), "");
+  fill(saddle_point_matrix(1.), matrix);
+  solver.factorize(matrix.trilinos_matrix());
+  const std::string line = solver.last_factorization_statistics();
+  std::smatch match;
+  ASSERT_TRUE(
+      std::regex_search(line,
+                        match,
+                        std::regex(R"(: ([\d.e+]+) flops, ([\d.]+) % of them on the busiest )"
+                                   R"(of 1 rank\(s\); ([\d.e+]+) entries in the factors)")))
+      << line;
+  const double flops = std::stod(match[1]), share = std::stod(match[2]);
+  const double entries = std::stod(match[3]);
+  EXPECT_GE(flops, 1.) << line;
+  EXPECT_LE(flops, 2. * n * n * n / 3.) << line;
+  EXPECT_EQ(share, 100.) << line;
+  EXPECT_GE(entries, 27.) << line;
+  EXPECT_LE(entries, n * (n + 1) / 2.) << line;
 }
 
 TEST(MumpsSolver, SingularMatrixIsASolverFailureNamingMumps)

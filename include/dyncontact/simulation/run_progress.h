@@ -59,10 +59,13 @@ public:
   /**
    * The run's last lines: steps, cuts, solves (`factorizations`, `low_rank_updates`), the wall
    * time and its `phases` [s], the `directory` of the results, the cost per step and the peak
-   * resident memory of the ranks, `peak_memory` [MiB] (largest with its rank, smallest, mean).
+   * resident memory of the ranks, `peak_memory` [MiB] (largest with its rank, smallest, mean);
+   * then `solver_statistics` (the direct solver's own figures of its last factorization) if not
+   * empty.
    */
   void report_totals(unsigned int factorizations,
                      unsigned int low_rank_updates,
+                     const std::string& solver_statistics,
                      const std::map<std::string, double>& phases,
                      const Utilities::MPI::MinMaxAvg& peak_memory,
                      const std::string& directory) const;

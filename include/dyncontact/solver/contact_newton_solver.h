@@ -128,6 +128,12 @@ public:
   /** The numeric factorizations so far (a matrix that did not change is not refactorized). */
   unsigned int n_factorizations() const { return system.n_factorizations(); }
 
+  /** The direct solver's figures of its last factorization (DirectSolver), or empty. */
+  std::string last_factorization_statistics() const
+  {
+    return system.last_factorization_statistics();
+  }
+
   /** The number of low-rank updates of a factorization so far (SaddlePointSystem). */
   unsigned int n_low_rank_updates() const { return system.n_low_rank_updates(); }
 

@@ -12,6 +12,7 @@
 #include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
+#include <string>
 
 class Amesos_BaseSolver;
 class Epetra_LinearProblem;
@@ -65,6 +66,12 @@ public:
 
   /** The number of numeric factorizations so far. */
   unsigned int n_factorizations() const { return factorizations; }
+
+  /**
+   * The solver package's own figures of its last factorization, one line (MUMPS: flops, their
+   * balance over the ranks, factor entries, memory; MumpsSolver), or empty (KLU, UMFPACK).
+   */
+  std::string last_factorization_statistics() const;
 
 private:
   const DirectSolverPackage package;

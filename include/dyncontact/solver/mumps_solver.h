@@ -6,6 +6,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 class Epetra_CrsMatrix;
@@ -65,6 +66,14 @@ public:
    */
   std::vector<Vector<double>> solve(const std::vector<Vector<double>>& right_hand_sides);
 
+  /**
+   * MUMPS's own figures of the last factorization, as one line: the flops of the elimination in
+   * all (RINFOG(3)) and the share of the busiest rank (the largest RINFO(3); 1/ranks is a perfect
+   * balance), the entries of the factors (INFOG(29)), and the memory MUMPS used, largest rank and
+   * all ranks (INFOG(21), INFOG(22), MB). Empty before the first factorization.
+   */
+  std::string last_factorization_statistics() const;
+
 private:
   /** The MUMPS instance (DMUMPS_STRUC_C), kept out of this header. */
   struct Instance;
@@ -80,5 +89,7 @@ private:
   /** This rank's rows of the matrix, 1-based: its rows of the right-hand sides. */
   std::vector<int> owned_rows;
   bool analysed = false;
+  /** The largest rank's elimination flops of the last factorization (RINFO(3) over the ranks). */
+  double busiest_rank_flops = 0;
 };
 } // namespace dyncontact

@@ -178,6 +178,12 @@ public:
   /** The number of numeric factorizations so far. */
   unsigned int n_factorizations() const { return direct_solver.n_factorizations(); }
 
+  /** The direct solver's figures of its last factorization (DirectSolver), or empty. */
+  std::string last_factorization_statistics() const
+  {
+    return direct_solver.last_factorization_statistics();
+  }
+
   /** The number of low-rank updates so far. */
   unsigned int n_low_rank_updates() const { return low_rank_updates; }
 
