@@ -34,6 +34,28 @@ run_sphere_impact() # output prm refinement material extra-arguments...
 }
 export -f run_sphere_impact
 
+# The large sphere impact of issue 27 on `ranks` MPI ranks (one: no mpirun; more than the cores:
+# oversubscribed), under /usr/bin/time -v (output.time): the paper's rho = 0.001 spheres touching
+# at t = 0 (CentreDistance 16) on the structured meshes/two_spheres.geo at the given Refinement
+# (4: 1,092,996 DoFs; 3: 273,924), Divisions 7, linear elastic, node-to-node pairs, modified Newton,
+# MUMPS (its symmetric LDL^T; SOLVER overrides), steps of dt = 0.0025 (every one a contact step)
+# up to `end_time`, no VTU. The environment goes to every rank (mpirun passes it to local ranks).
+# The log goes to output.log; a failure is reported, with status 3.
+run_large_sphere() # output ranks refinement end-time
+{
+  local output=$1 ranks=$2 refinement=$3 end_time=$4 launcher=()
+  [ "$ranks" -gt 1 ] && launcher=(mpirun --oversubscribe -np "$ranks")
+  /usr/bin/time -v -o "$output.time" "${launcher[@]}" build/dyncontact \
+    prm/spheres_rho0.001.prm --quiet --output "$output" \
+    --set "Output/vtu interval=0" --set "Output/profile times=" \
+    --set "Bodies/Body 1/material=linear elastic" --set "Bodies/Body 2/material=linear elastic" \
+    --set "Newton/method=modified" --set "Newton/direct solver=${SOLVER:-mumps}" \
+    --set "Mesh/file=../meshes/two_spheres.geo" \
+    --set "Mesh/geo parameters=Refinement: $refinement, Divisions: 7, RadialDivisions: 6, PoleGrading: 10, CoreOffset: 0.3, CentreDistance: 16" \
+    --set "Contact/discretization=node-to-node" --set "Time integration/end time=$end_time" \
+    >"$output.log" 2>&1 || { echo "ranks $ranks failed, see $output.log" >&2; return 3; }
+}
+
 # Runs `function fields... extra-arguments...` for every line of standard input, two at a time;
 # a line holds the fields separated by '|'. The function must be exported (export -f). Fails if
 # any call failed, after all of them have run.

@@ -5,9 +5,10 @@
 # cells), linear elastic, node-to-node pairs, modified Newton, MUMPS (its symmetric LDL^T), 4
 # steps of dt = 0.0025 (every step a contact step), on each rank count given (default 1 2 4; more
 # ranks than the machine's cores are oversubscribed: right for memory, not for time).
-# Writes bench/results/large_sphere_ranks/ranks_N.{log,time} and prints a markdown table: wall
-# per contact step and its factorization share from dyncontact's last lines, peak resident memory
-# of the largest rank (dyncontact's VmHWM line) and its ratio to one rank. About 25 minutes for
+# Writes bench/results/large_sphere_ranks/ranks_N.{log,time} and prints a markdown table, from
+# dyncontact's last lines: wall per contact step, its factorization share, MUMPS's flops and the
+# busiest rank's share of them, the peak resident memory of the largest rank (VmHWM) and its
+# ratio to one rank. About 25 minutes for
 # 1 2 4 on 2 cores; set-up (meshing, caches, the solver's symbolic analysis: METIS's order and
 # MUMPS's analysis, given in its own column) is about 1.5 to 2.5 minutes of each run and is not in
 # the per-step figure.
@@ -19,23 +20,13 @@ mkdir -p "$results"
 ranks_list=("$@")
 [ ${#ranks_list[@]} -gt 0 ] || ranks_list=(1 2 4)
 for ranks in "${ranks_list[@]}"; do
-  launcher=()
-  [ "$ranks" -gt 1 ] && launcher=(mpirun --oversubscribe -np "$ranks")
-  /usr/bin/time -v -o "$results/ranks_$ranks.time" "${launcher[@]}" build/dyncontact \
-    prm/spheres_rho0.001.prm --quiet --output "$results/ranks_$ranks" \
-    --set "Output/vtu interval=0" --set "Output/profile times=" \
-    --set "Bodies/Body 1/material=linear elastic" --set "Bodies/Body 2/material=linear elastic" \
-    --set "Newton/method=modified" --set "Newton/direct solver=${SOLVER:-mumps}" \
-    --set "Mesh/file=../meshes/two_spheres.geo" \
-    --set "Mesh/geo parameters=Refinement: 4, Divisions: 7, RadialDivisions: 6, PoleGrading: 10, CoreOffset: 0.3, CentreDistance: 16" \
-    --set "Contact/discretization=node-to-node" --set "Time integration/end time=0.01" \
-    >"$results/ranks_$ranks.log" 2>&1 || { echo "ranks $ranks failed, see $results/ranks_$ranks.log" >&2; exit 3; }
+  run_large_sphere "$results/ranks_$ranks" "$ranks" 4 0.01
 done
 /usr/bin/python3 - "$results" "${ranks_list[@]}" <<'EOF'
 import re, sys
 results, ranks_list = sys.argv[1], sys.argv[2:]
-print("| ranks | DoFs | wall per contact step | factorization | symbolic analysis (set-up) | peak memory, largest rank | vs 1 rank | smallest rank |")
-print("|---|---|---|---|---|---|---|---|")
+print("| ranks | DoFs | wall per contact step | factorization | MUMPS's flops, busiest rank's share | symbolic analysis (set-up) | peak memory, largest rank | vs 1 rank | smallest rank |")
+print("|---|---|---|---|---|---|---|---|---|")
 one = None
 for ranks in ranks_list:
     log = open(f"{results}/ranks_{ranks}.log").read()
@@ -46,7 +37,9 @@ for ranks in ranks_list:
     analysis = float(re.search(r"symbolic analysis of the fixed pattern ([\d.e+]+) s", log).group(1))
     largest, smallest = map(float, re.search(
         r"peak memory per rank ([\d.]+) MiB \(largest.*?([\d.]+) MiB \(smallest", log).groups())
+    flops = re.search(r"([\d.e+]+) flops, ([\d.]+) % of them on the busiest", log)
+    flops = f"{flops.group(1)}, {flops.group(2)} %" if flops else "(not MUMPS)"
     one = one or largest
-    print(f"| {ranks} | {dofs} | {step:.1f} s | {factorization / n_steps / step * 100:.0f} % | {analysis:.1f} s | "
+    print(f"| {ranks} | {dofs} | {step:.1f} s | {factorization / n_steps / step * 100:.0f} % | {flops} | {analysis:.1f} s | "
           f"{largest:.0f} MiB | {largest / one:.2f} | {smallest:.0f} MiB |")
 EOF
