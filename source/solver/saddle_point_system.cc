@@ -47,10 +47,12 @@ DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,
         contact_couplings.add(n_dofs + multiplier, dof);
         contact_couplings.add(dof, n_dofs + multiplier);
       });
+  // Rows by row_length() and column_number(), both O(1): DynamicSparsityPattern::begin(row) of an
+  // empty row searches on to the next non-empty one, which made this quadratic in the DoFs.
   if (owns_multiplier_rows)
     for (types::global_dof_index row = n_dofs; row < n_total; ++row)
-      for (auto entry = contact_couplings.begin(row); entry != contact_couplings.end(row); ++entry)
-        written_rows.add_index(entry->column());
+      for (types::global_dof_index k = 0; k < contact_couplings.row_length(row); ++k)
+        written_rows.add_index(contact_couplings.column_number(row, k));
   written_rows.compress();
 
   DynamicSparsityPattern sparsity(n_total, n_total, written_rows);
@@ -63,8 +65,8 @@ DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,
           sparsity.add(row, column);
   }
   for (const auto row : written_rows)
-    for (auto entry = contact_couplings.begin(row); entry != contact_couplings.end(row); ++entry)
-      sparsity.add(row, entry->column());
+    for (types::global_dof_index k = 0; k < contact_couplings.row_length(row); ++k)
+      sparsity.add(row, contact_couplings.column_number(row, k));
   return sparsity;
 }
 
