@@ -379,7 +379,7 @@ void ElasticBodies<dim>::assemble_internal_force(const Vector<double>& displacem
     integrate(
         displacement, &internal_force, static_cast<SparseMatrix<double>*>(nullptr), strain_energy);
     if (tangent != nullptr)
-      add_linear_tangent(*tangent);
+      add_constant_tangent(*tangent);
   }
 }
 
@@ -392,7 +392,7 @@ double ElasticBodies<dim>::strain_energy(const Vector<double>& displacement) con
 }
 
 template <int dim>
-void ElasticBodies<dim>::add_linear_tangent(TrilinosWrappers::SparseMatrix& tangent) const
+void ElasticBodies<dim>::add_constant_tangent(TrilinosWrappers::SparseMatrix& tangent) const
 {
   std::vector<types::global_dof_index> columns;
   std::vector<double> values;

@@ -43,11 +43,21 @@ void DynamicResidual<dim>::assemble(const Step& step,
   const double inactive_diagonal = step.inertia_factor * lumped_mass.mean_value();
   try
   {
+    // A constant K (linear bodies) is assembled once and kept as the tangent's constant part.
+    const bool constant_tangent = bodies.has_constant_tangent();
+    if (tangent != nullptr && constant_tangent && !tangent->has_constant_part())
+    {
+      tangent->start_assembly();
+      bodies.add_constant_tangent(tangent->matrix());
+      tangent->finish_assembly();
+      tangent->keep_as_constant_part();
+    }
     if (tangent != nullptr)
       tangent->start_assembly();
     bodies.assemble_internal_force(displacement,
                                    internal_force_values,
-                                   tangent != nullptr ? &tangent->matrix() : nullptr,
+                                   tangent != nullptr && !constant_tangent ? &tangent->matrix()
+                                                                           : nullptr,
                                    &strain_energy_value);
   }
   catch (const SolverFailure&)
@@ -57,11 +67,9 @@ void DynamicResidual<dim>::assemble(const Step& step,
     throw;
   }
   for (types::global_dof_index i = 0; i < inertia_force.size(); ++i)
-  {
     inertia_force[i] = step.inertia_factor * lumped_mass[i] * increment[i];
-    if (tangent != nullptr && tangent->owns_row(i))
-      tangent->matrix().add(i, i, step.inertia_factor * lumped_mass[i]);
-  }
+  if (tangent != nullptr)
+    tangent->add_to_diagonal(lumped_mass, step.inertia_factor);
   // The contact layer works on the contact border: G^T lambda there, scattered to the volume.
   const ContactBorder<dim>& border = contact.border();
   Vector<double> border_force(border.n_dofs());

@@ -109,6 +109,21 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
       locally_owned_rows,
       written_rows_pattern(dof_handler, contact, locally_owned_rows, multiplier_rows_owner),
       communicator);
+  const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
+  diagonal_position.assign(matrix.NumMyRows(), -1);
+  for (int row = 0; row < matrix.NumMyRows(); ++row)
+  {
+    const auto global_row = TrilinosWrappers::global_row_index(matrix, row);
+    if (static_cast<types::global_dof_index>(global_row) >= n_dofs)
+      continue; // a multiplier row
+    int n_entries;
+    double* values;
+    int* columns;
+    matrix.ExtractMyRowView(row, n_entries, values, columns);
+    const int* diagonal = std::find(columns, columns + n_entries, matrix.LCID(global_row));
+    Assert(diagonal != columns + n_entries, ExcMessage("a displacement row without its diagonal"));
+    diagonal_position[row] = static_cast<int>(diagonal - columns);
+  }
   // The pattern is final: its symbolic analysis belongs to the set-up, not to the first step.
   Timer timer(communicator, true);
   direct_solver.analyse(system_matrix);
@@ -163,7 +178,10 @@ void SaddlePointSystem<dim>::split(const Vector<double>& whole,
 template <int dim>
 void SaddlePointSystem<dim>::start_assembly()
 {
-  system_matrix = 0.;
+  if (constant_part.empty())
+    system_matrix = 0.;
+  else
+    set_local_values(constant_part);
 }
 
 template <int dim>
@@ -179,21 +197,17 @@ TangentScales SaddlePointSystem<dim>::displacement_scales() const
   const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
   for (int row = 0; row < matrix.NumMyRows(); ++row)
   {
-    const auto global_row = TrilinosWrappers::global_row_index(matrix, row);
-    if (static_cast<types::global_dof_index>(global_row) >= n_dofs)
+    if (diagonal_position[row] < 0)
       continue; // a multiplier row
     int n_entries;
     double* values;
-    int* columns;
-    matrix.ExtractMyRowView(row, n_entries, values, columns);
+    matrix.ExtractMyRowView(row, n_entries, values);
     double row_sum = 0.;
     for (int k = 0; k < n_entries; ++k)
-    {
       row_sum += std::abs(values[k]);
-      if (TrilinosWrappers::global_column_index(matrix, columns[k]) == global_row)
-        scales.largest_diagonal = std::max(scales.largest_diagonal, std::abs(values[k]));
-    }
     scales.largest_row_sum = std::max(scales.largest_row_sum, row_sum);
+    scales.largest_diagonal =
+        std::max(scales.largest_diagonal, std::abs(values[diagonal_position[row]]));
   }
   scales.largest_diagonal = Utilities::MPI::max(scales.largest_diagonal, communicator);
   scales.largest_row_sum  = Utilities::MPI::max(scales.largest_row_sum, communicator);
@@ -214,6 +228,39 @@ std::vector<double> SaddlePointSystem<dim>::local_values() const
     values.insert(values.end(), row_values, row_values + n_entries);
   }
   return values;
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::add_to_diagonal(const Vector<double>& diagonal, const double factor)
+{
+  AssertDimension(diagonal.size(), n_dofs);
+  // Epetra's row views point into the matrix's own storage (writable, though the view is const).
+  const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix();
+  for (int row = 0; row < matrix.NumMyRows(); ++row)
+    if (diagonal_position[row] >= 0)
+    {
+      int n_entries;
+      double* values;
+      matrix.ExtractMyRowView(row, n_entries, values);
+      values[diagonal_position[row]] +=
+          factor * diagonal[TrilinosWrappers::global_row_index(matrix, row)];
+    }
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::set_local_values(const std::vector<double>& values)
+{
+  const Epetra_CrsMatrix& matrix = system_matrix.trilinos_matrix(); // see add_to_diagonal()
+  AssertDimension(values.size(), static_cast<std::size_t>(matrix.NumMyNonzeros()));
+  auto value = values.begin();
+  for (int row = 0; row < matrix.NumMyRows(); ++row)
+  {
+    int n_entries;
+    double* row_values;
+    matrix.ExtractMyRowView(row, n_entries, row_values);
+    std::copy_n(value, n_entries, row_values);
+    value += n_entries;
+  }
 }
 
 template <int dim>

@@ -87,13 +87,23 @@ public:
 
   /**
    * Internal force Q(u) into `internal_force` (overwritten) and, if `tangent` is not null, dQ/du
-   * added into its leading n_dofs x n_dofs block (the caller zeroes it), and, if
-   * `strain_energy` is not null, the strain energy from the same pass.
+   * added into its leading n_dofs x n_dofs block (the caller zeroes it; for linear bodies this is
+   * add_constant_tangent()), and, if `strain_energy` is not null, the strain energy from the same
+   * pass.
    */
   void assemble_internal_force(const Vector<double>& displacement,
                                Vector<double>& internal_force,
                                TrilinosWrappers::SparseMatrix* tangent,
                                double* strain_energy = nullptr) const;
+
+  /** Whether dQ/du is constant: every body's material is linear (class documentation). */
+  bool has_constant_tangent() const { return !linear_tangent.empty(); }
+
+  /**
+   * Bodies with a constant tangent (has_constant_tangent()): adds K, this rank's cells' share,
+   * into the leading block of `tangent`.
+   */
+  void add_constant_tangent(TrilinosWrappers::SparseMatrix& tangent) const;
 
   /** Total strain energy, the integral of W(F) over all bodies. */
   double strain_energy(const Vector<double>& displacement) const;
@@ -132,9 +142,6 @@ private:
                  Vector<double>* internal_force,
                  MatrixType* tangent,
                  double* strain_energy) const;
-
-  /** Linear bodies: adds K (this rank's share) into `tangent`. */
-  void add_linear_tangent(TrilinosWrappers::SparseMatrix& tangent) const;
 
   /** A locally owned cell's reference data at its quadrature points (class documentation). */
   struct CellData

@@ -113,11 +113,12 @@ public:
   /** Adds `value` on the diagonal of `multiplier`'s row. */
   void add_diagonal(unsigned int multiplier, double value) override;
 
-  /** Whether `row` (< n_dofs + n_multipliers) is one of this rank's rows. */
-  bool owns_row(const types::global_dof_index row) const
-  {
-    return locally_owned_rows.is_element(row);
-  }
+  /**
+   * Adds factor * diagonal[i] to the diagonal entry of each of this rank's displacement rows i
+   * (`diagonal`: n_dofs entries, whole on every rank), e.g. the inertia c M of a lumped mass;
+   * at the entries' known places, not by global index.
+   */
+  void add_to_diagonal(const Vector<double>& diagonal, double factor);
 
   /**
    * The vector over all unknowns of `displacement_rows` (n_dofs entries) followed by
@@ -131,8 +132,22 @@ public:
              Vector<double>& displacement_part,
              Vector<double>& multiplier_part) const;
 
-  /** Sets every entry to zero before an assembly (the pattern stays). */
+  /**
+   * Starts an assembly: every entry set to the constant part (keep_as_constant_part()), or to
+   * zero if none was kept (the pattern stays).
+   */
   void start_assembly();
+
+  /**
+   * Keeps the matrix as assembled now (after finish_assembly(); every rank) as the constant part
+   * every later start_assembly() starts from, e.g. K of linear bodies, which then is not added
+   * again: a copy of this rank's values instead of an insertion of each entry by its global
+   * index, and none of its entries sent between ranks. Collective.
+   */
+  void keep_as_constant_part() { constant_part = local_values(); }
+
+  /** Whether keep_as_constant_part() was called. */
+  bool has_constant_part() const { return !constant_part.empty(); }
 
   /**
    * Ends an assembly, also one that stopped early (a failed evaluation): exchanges the entries
@@ -194,6 +209,9 @@ private:
   /** This rank's matrix entries, row by row. */
   std::vector<double> local_values() const;
 
+  /** Sets this rank's matrix entries, row by row (as local_values() gives them). */
+  void set_local_values(const std::vector<double>& values);
+
   /**
    * The low-rank update from the factorized matrix to the assembled one, if the changes qualify
    * (class documentation) and the update is well conditioned; empty otherwise. Collective.
@@ -211,6 +229,13 @@ private:
   const AffineConstraints<double>& constraints;
   Matrix system_matrix;
   DirectSolver direct_solver;
+  /**
+   * Of each of this rank's rows (Epetra's local numbering), the diagonal entry's place in the
+   * row, or -1 in the multiplier rows.
+   */
+  std::vector<int> diagonal_position;
+  /** This rank's entries (row by row) of the constant part; empty if none was kept. */
+  std::vector<double> constant_part;
   /** This rank's matrix entries (row by row) at the last factorization; empty before the first. */
   std::vector<double> factorized_values;
   /** This rank's matrix entries at the last update_factorization(). */
