@@ -211,25 +211,10 @@ ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
     cells.push_back(std::move(data));
   }
 
-  if (std::all_of(this->bodies.begin(),
+  constant_tangent =
+      std::all_of(this->bodies.begin(),
                   this->bodies.end(),
-                  [](const BodyMaterial& body) { return body.material->is_linear(); }))
-  {
-    DynamicSparsityPattern couplings(dof_handler.n_dofs());
-    for (const CellData& cell : cells)
-    {
-      linear_tangent_rows.insert(linear_tangent_rows.end(), cell.dofs.begin(), cell.dofs.end());
-      for (const auto row : cell.dofs)
-        for (const auto column : cell.dofs)
-          couplings.add(row, column);
-    }
-    std::sort(linear_tangent_rows.begin(), linear_tangent_rows.end());
-    linear_tangent_rows.erase(std::unique(linear_tangent_rows.begin(), linear_tangent_rows.end()),
-                              linear_tangent_rows.end());
-    linear_tangent_pattern.copy_from(couplings);
-    linear_tangent.reinit(linear_tangent_pattern);
-    integrate(Vector<double>(dof_handler.n_dofs()), nullptr, &linear_tangent, nullptr);
-  }
+                  [](const BodyMaterial& body) { return body.material->is_linear(); });
 }
 
 template <int dim>
@@ -372,7 +357,7 @@ void ElasticBodies<dim>::assemble_internal_force(const Vector<double>& displacem
                                                  TrilinosWrappers::SparseMatrix* tangent,
                                                  double* strain_energy) const
 {
-  if (linear_tangent.empty())
+  if (!constant_tangent)
     integrate(displacement, &internal_force, tangent, strain_energy);
   else
   {
@@ -394,20 +379,8 @@ double ElasticBodies<dim>::strain_energy(const Vector<double>& displacement) con
 template <int dim>
 void ElasticBodies<dim>::add_constant_tangent(TrilinosWrappers::SparseMatrix& tangent) const
 {
-  std::vector<types::global_dof_index> columns;
-  std::vector<double> values;
-  for (const auto row : linear_tangent_rows)
-  {
-    columns.clear();
-    values.clear();
-    for (auto entry = linear_tangent.begin(row); entry != linear_tangent.end(row); ++entry)
-    {
-      columns.push_back(entry->column());
-      values.push_back(entry->value());
-    }
-    if (!columns.empty())
-      tangent.add(row, columns.size(), columns.data(), values.data(), false, false);
-  }
+  Assert(constant_tangent, ExcMessage("add_constant_tangent() is for linear bodies only"));
+  integrate(Vector<double>(dof_handler.n_dofs()), nullptr, &tangent, nullptr);
 }
 
 template <int dim>

@@ -68,6 +68,7 @@ ContactNewtonSolver<dim>::ContactNewtonSolver(const DoFHandler<dim>& dof_handler
       system(dof_handler, contact, constraints, parameters.direct_solver),
       residual(bodies, contact, lumped_mass, constraints)
 {
+  residual.keep_constant_tangent(system);
 }
 
 template <int dim>

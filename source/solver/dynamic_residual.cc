@@ -33,6 +33,17 @@ DynamicResidual<dim>::evaluate(const Step& step,
 }
 
 template <int dim>
+void DynamicResidual<dim>::keep_constant_tangent(SaddlePointSystem<dim>& tangent) const
+{
+  if (!bodies.has_constant_tangent())
+    return;
+  tangent.start_assembly();
+  bodies.add_constant_tangent(tangent.matrix());
+  tangent.finish_assembly();
+  tangent.keep_as_constant_part();
+}
+
+template <int dim>
 void DynamicResidual<dim>::assemble(const Step& step,
                                     const Vector<double>& increment,
                                     const Vector<double>& displacement,
@@ -43,15 +54,10 @@ void DynamicResidual<dim>::assemble(const Step& step,
   const double inactive_diagonal = step.inertia_factor * lumped_mass.mean_value();
   try
   {
-    // A constant K (linear bodies) is assembled once and kept as the tangent's constant part.
+    // A constant K (linear bodies) is in the tangent's constant part (keep_constant_tangent()).
     const bool constant_tangent = bodies.has_constant_tangent();
-    if (tangent != nullptr && constant_tangent && !tangent->has_constant_part())
-    {
-      tangent->start_assembly();
-      bodies.add_constant_tangent(tangent->matrix());
-      tangent->finish_assembly();
-      tangent->keep_as_constant_part();
-    }
+    Assert(tangent == nullptr || !constant_tangent || tangent->has_constant_part(),
+           ExcMessage("keep_constant_tangent() was not called"));
     if (tangent != nullptr)
       tangent->start_assembly();
     bodies.assemble_internal_force(displacement,

@@ -52,9 +52,10 @@ struct BodyMaterial
  * differed from t = 0 in the kinetic energy, outside this class; not yet traced.)
  *
  * Linear bodies: if every body's material is linear (Material::is_linear(); the kinematics give
- * F = I + a term linear in u), the tangent dQ/du = K is constant: it is integrated once at
- * construction (this rank's cells' share, entries summed in cell order as in every assembly, so
- * the same bits) and each tangent is a copy of it. Q(u) itself is still integrated point by point
+ * F = I + a term linear in u), the tangent dQ/du = K is constant: add_constant_tangent()
+ * integrates it (this rank's cells' share, entries summed in cell order as in every assembly, so
+ * the same bits), once, and the caller keeps it (DynamicResidual: as SaddlePointSystem's constant
+ * part, which every tangent starts from). Q(u) itself is still integrated point by point
  * rather than taken as K u: the product K u of a large rigid translation (the spheres move by 2
  * before they touch) leaves round-off forces of eps |K| |u| that do not balance, and in 800
  * free-flight steps they changed the momentum by 4e-10 of itself; the quadrature's stay balanced.
@@ -97,11 +98,12 @@ public:
                                double* strain_energy = nullptr) const;
 
   /** Whether dQ/du is constant: every body's material is linear (class documentation). */
-  bool has_constant_tangent() const { return !linear_tangent.empty(); }
+  bool has_constant_tangent() const { return constant_tangent; }
 
   /**
    * Bodies with a constant tangent (has_constant_tangent()): adds K, this rank's cells' share,
-   * into the leading block of `tangent`.
+   * into the leading block of `tangent` (an integration at u = 0; the caller keeps it, e.g. as
+   * SaddlePointSystem's constant part).
    */
   void add_constant_tangent(TrilinosWrappers::SparseMatrix& tangent) const;
 
@@ -166,12 +168,7 @@ private:
   /** The FE component of each local DoF. */
   std::vector<unsigned int> local_component;
   std::vector<CellData> cells;
-  /** Linear bodies: K integrated over this rank's cells (rows of other ranks' DoFs included);
-   *  empty (0 x 0) otherwise. */
-  SparsityPattern linear_tangent_pattern;
-  SparseMatrix<double> linear_tangent;
-  /** The rows of K with entries: the DoFs of this rank's cells (the pattern also holds an empty
-   *  diagonal in every other row, which the tangent of another rank's rows must not get). */
-  std::vector<types::global_dof_index> linear_tangent_rows;
+  /** Every body's material is linear: dQ/du = K is constant (has_constant_tangent()). */
+  bool constant_tangent;
 };
 } // namespace dyncontact

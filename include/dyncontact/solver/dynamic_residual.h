@@ -89,6 +89,14 @@ public:
                   const AffineConstraints<double>& constraints);
 
   /**
+   * Bodies with a constant tangent (ElasticBodies::has_constant_tangent(), linear materials): K
+   * assembled into `tangent` and kept as its constant part (SaddlePointSystem), which every later
+   * tangent of evaluate() starts from. Once, before the first evaluate() with that tangent; nothing
+   * for other bodies. Collective.
+   */
+  void keep_constant_tangent(SaddlePointSystem<dim>& tangent) const;
+
+  /**
    * Evaluates the residual at `displacement` = step.predictor + `increment` (both n_dofs
    * entries) with the multipliers and active set the contact layer holds, and, if `tangent` is
    * not null, assembles the tangent into it (zeroed first) and records its scales (TangentScales).
