@@ -8,10 +8,10 @@
 # Writes bench/results/large_sphere_ranks/ranks_N.{log,time} and prints a markdown table, from
 # dyncontact's last lines: wall per contact step, its factorization share, MUMPS's flops and the
 # busiest rank's share of them, the peak resident memory of the largest rank (VmHWM) and its
-# ratio to one rank. About 25 minutes for
+# ratio to one rank. About 6 minutes for
 # 1 2 4 on 2 cores; set-up (meshing, caches, the solver's symbolic analysis: METIS's order and
-# MUMPS's analysis, given in its own column) is about 1.5 to 2.5 minutes of each run and is not in
-# the per-step figure.
+# MUMPS's analysis, given in its own column) is 30 to 40 s of each run and is not in the per-step
+# figure.
 #   bench/large_sphere_ranks.sh [RANKS...]
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
