@@ -56,8 +56,8 @@ void DynamicResidual<dim>::assemble(const Step& step,
   {
     // A constant K (linear bodies) is in the tangent's constant part (keep_constant_tangent()).
     const bool constant_tangent = bodies.has_constant_tangent();
-    Assert(tangent == nullptr || !constant_tangent || tangent->has_constant_part(),
-           ExcMessage("keep_constant_tangent() was not called"));
+    AssertThrow(tangent == nullptr || !constant_tangent || tangent->has_constant_part(),
+                ExcMessage("keep_constant_tangent() was not called"));
     if (tangent != nullptr)
       tangent->start_assembly();
     bodies.assemble_internal_force(displacement,

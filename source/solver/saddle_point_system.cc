@@ -121,7 +121,8 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
     int* columns;
     matrix.ExtractMyRowView(row, n_entries, values, columns);
     const int* diagonal = std::find(columns, columns + n_entries, matrix.LCID(global_row));
-    Assert(diagonal != columns + n_entries, ExcMessage("a displacement row without its diagonal"));
+    AssertThrow(diagonal != columns + n_entries,
+                ExcMessage("a displacement row without its diagonal"));
     diagonal_position[row] = static_cast<int>(diagonal - columns);
   }
   // The pattern is final: its symbolic analysis belongs to the set-up, not to the first step.
