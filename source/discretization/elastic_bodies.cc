@@ -357,15 +357,7 @@ void ElasticBodies<dim>::assemble_internal_force(const Vector<double>& displacem
                                                  TrilinosWrappers::SparseMatrix* tangent,
                                                  double* strain_energy) const
 {
-  if (!constant_tangent)
-    integrate(displacement, &internal_force, tangent, strain_energy);
-  else
-  {
-    integrate(
-        displacement, &internal_force, static_cast<SparseMatrix<double>*>(nullptr), strain_energy);
-    if (tangent != nullptr)
-      add_constant_tangent(*tangent);
-  }
+  integrate(displacement, &internal_force, tangent, strain_energy);
 }
 
 template <int dim>

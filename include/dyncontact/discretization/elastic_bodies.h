@@ -88,9 +88,9 @@ public:
 
   /**
    * Internal force Q(u) into `internal_force` (overwritten) and, if `tangent` is not null, dQ/du
-   * added into its leading n_dofs x n_dofs block (the caller zeroes it; for linear bodies this is
-   * add_constant_tangent()), and, if `strain_energy` is not null, the strain energy from the same
-   * pass.
+   * added into its leading n_dofs x n_dofs block (the caller zeroes it; linear bodies are better
+   * served by add_constant_tangent() once), and, if `strain_energy` is not null, the strain energy
+   * from the same pass.
    */
   void assemble_internal_force(const Vector<double>& displacement,
                                Vector<double>& internal_force,
