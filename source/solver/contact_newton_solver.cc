@@ -272,7 +272,8 @@ template <int dim>
 void ContactNewtonSolver<dim>::take_newton_update(
     Iteration& iteration, const typename DynamicResidual<dim>::Figures& figures)
 {
-  Vector<double> right_hand_side = system.stack(residual.force_rows(), residual.constraint_rows());
+  DistributedVector right_hand_side =
+      system.stack(residual.force_rows(), residual.constraint_rows());
   right_hand_side *= -1.;
   // Modified Newton reuses what it can: low-rank updates of the factors for pairs entering or
   // leaving; full Newton keeps fresh factorizations of every changed tangent (the reference).

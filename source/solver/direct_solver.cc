@@ -9,6 +9,8 @@
 #include <Amesos_BaseSolver.h>
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_LinearProblem.h>
+#include <Epetra_Map.h>
+#include <Epetra_Vector.h>
 #include <Teuchos_ParameterList.hpp>
 
 namespace dyncontact
@@ -65,7 +67,6 @@ void DirectSolver::analyse(const TrilinosWrappers::SparseMatrix& matrix)
   else
   {
     const char* name   = "Amesos_Klu";
-    locally_owned_rows = matrix.locally_owned_range_indices();
     problem            = std::make_unique<Epetra_LinearProblem>();
     problem->SetOperator(const_cast<Epetra_CrsMatrix*>(&epetra));
     Amesos factory;
@@ -104,32 +105,9 @@ void DirectSolver::factorize(const TrilinosWrappers::SparseMatrix& matrix)
   ++factorizations;
 }
 
-Vector<double> DirectSolver::solve(const Vector<double>& right_hand_side)
+DistributedVector DirectSolver::solve(const DistributedVector& right_hand_side)
 {
-  if (package == DirectSolverPackage::umfpack)
-  {
-    Vector<double> solution = right_hand_side;
-    umfpack.solve(solution);
-    return solution;
-  }
-  if (package == DirectSolverPackage::mumps)
-    return std::move(mumps->solve({right_hand_side}).front());
-  TrilinosWrappers::MPI::Vector distributed_rhs(locally_owned_rows, communicator);
-  TrilinosWrappers::MPI::Vector distributed_solution(locally_owned_rows, communicator);
-  for (const auto row : locally_owned_rows)
-    distributed_rhs[row] = right_hand_side[row];
-  distributed_rhs.compress(VectorOperation::insert);
-  problem->SetLHS(&distributed_solution.trilinos_vector());
-  problem->SetRHS(&distributed_rhs.trilinos_vector());
-  check(amesos->Solve(), "Amesos_Klu", "solve");
-  // Every rank needs the whole solution: import all entries.
-  TrilinosWrappers::MPI::Vector whole(
-      locally_owned_rows, complete_index_set(right_hand_side.size()), communicator);
-  whole = distributed_solution;
-  Vector<double> solution(right_hand_side.size());
-  for (types::global_dof_index i = 0; i < solution.size(); ++i)
-    solution[i] = whole[i];
-  return solution;
+  return std::move(solve(std::vector<DistributedVector>{right_hand_side}).front());
 }
 
 std::string DirectSolver::last_factorization_statistics() const
@@ -137,14 +115,32 @@ std::string DirectSolver::last_factorization_statistics() const
   return mumps ? mumps->last_factorization_statistics() : "";
 }
 
-std::vector<Vector<double>> DirectSolver::solve(const std::vector<Vector<double>>& right_hand_sides)
+std::vector<DistributedVector>
+DirectSolver::solve(const std::vector<DistributedVector>& right_hand_sides)
 {
   if (package == DirectSolverPackage::mumps)
     return mumps->solve(right_hand_sides);
-  std::vector<Vector<double>> solutions;
-  solutions.reserve(right_hand_sides.size());
-  for (const auto& right_hand_side : right_hand_sides)
-    solutions.push_back(solve(right_hand_side));
+  std::vector<DistributedVector> solutions(right_hand_sides.size());
+  for (std::size_t j = 0; j < right_hand_sides.size(); ++j)
+  {
+    const DistributedVector& right_hand_side = right_hand_sides[j];
+    DistributedVector& solution              = solutions[j];
+    solution.reinit(right_hand_side, /*omit_zeroing_entries=*/true);
+    if (package == DirectSolverPackage::umfpack) // one rank: the vectors are whole
+    {
+      Vector<double> serial(right_hand_side.begin(), right_hand_side.end());
+      umfpack.solve(serial);
+      std::copy(serial.begin(), serial.end(), solution.begin());
+      continue;
+    }
+    // Amesos reads and writes Epetra views of the vectors' own rows (the matrix's row map).
+    const Epetra_Map& rows = problem->GetMatrix()->RowMatrixRowMap();
+    Epetra_Vector rhs(View, rows, const_cast<double*>(right_hand_side.begin()));
+    Epetra_Vector lhs(View, rows, solution.begin());
+    problem->SetRHS(&rhs);
+    problem->SetLHS(&lhs);
+    check(amesos->Solve(), "Amesos_Klu", "solve");
+  }
   return solutions;
 }
 } // namespace dyncontact

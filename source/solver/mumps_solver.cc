@@ -3,6 +3,7 @@
 
 #include <Epetra_CrsMatrix.h>
 #include <dmumps_c.h>
+#include <algorithm>
 #include <iomanip>
 #include <metis.h>
 #include <numeric>
@@ -147,6 +148,16 @@ void MumpsSolver::analyse(const Epetra_CrsMatrix& matrix)
   instance->n = static_cast<MUMPS_INT>(matrix.NumGlobalRows64());
   for (int i = 0; i < matrix.RowMap().NumMyElements(); ++i)
     owned_rows.push_back(static_cast<MUMPS_INT>(matrix.RowMap().GID64(i) + 1));
+  // The first row of each run of consecutive owned rows, with its rank, over all ranks.
+  std::vector<int> run_starts;
+  for (std::size_t i = 0; i < owned_rows.size(); ++i)
+    if (i == 0 || owned_rows[i] != owned_rows[i - 1] + 1)
+      run_starts.push_back(owned_rows[i]);
+  const auto starts_by_rank = Utilities::MPI::all_gather(communicator, run_starts);
+  for (std::size_t rank = 0; rank < starts_by_rank.size(); ++rank)
+    for (const int start : starts_by_rank[rank])
+      owner_runs.emplace_back(start, static_cast<int>(rank));
+  std::sort(owner_runs.begin(), owner_runs.end());
   instance->nnz_loc = static_cast<MUMPS_INT8>(rows.size());
   instance->irn_loc = rows.data();
   instance->jcn_loc = columns.data();
@@ -209,10 +220,11 @@ std::string MumpsSolver::last_factorization_statistics() const
   return line.str();
 }
 
-std::vector<Vector<double>> MumpsSolver::solve(const std::vector<Vector<double>>& right_hand_sides)
+std::vector<DistributedVector>
+MumpsSolver::solve(const std::vector<DistributedVector>& right_hand_sides)
 {
   const auto k = right_hand_sides.size();
-  std::vector<Vector<double>> solutions(k, Vector<double>(instance->n));
+  std::vector<DistributedVector> solutions(k);
   if (k == 0)
     return solutions;
   // Distributed right-hand sides (ICNTL(20) = 10): this rank's rows of each column.
@@ -221,8 +233,9 @@ std::vector<Vector<double>> MumpsSolver::solve(const std::vector<Vector<double>>
   for (std::size_t j = 0; j < k; ++j)
   {
     AssertDimension(right_hand_sides[j].size(), static_cast<std::size_t>(instance->n));
-    for (std::size_t i = 0; i < n_rows; ++i)
-      local_rhs[j * n_rows + i] = right_hand_sides[j][owned_rows[i] - 1];
+    AssertDimension(right_hand_sides[j].locally_owned_size(), n_rows);
+    std::copy_n(right_hand_sides[j].begin(), n_rows, &local_rhs[j * n_rows]);
+    solutions[j].reinit(right_hand_sides[j]);
   }
   instance->nrhs     = static_cast<MUMPS_INT>(k);
   instance->nloc_rhs = static_cast<MUMPS_INT>(n_rows);
@@ -240,33 +253,78 @@ std::vector<Vector<double>> MumpsSolver::solve(const std::vector<Vector<double>>
   instance->rhs_loc  = nullptr; // the buffers end with this call
   instance->sol_loc  = nullptr;
   instance->isol_loc = nullptr;
-  // Every rank's rows of each solution to every rank (the rows partition 1..n).
-  const std::vector<int> counts = Utilities::MPI::all_gather(communicator, n_solution_rows);
-  std::vector<int> offsets(counts.size());
-  std::exclusive_scan(counts.begin(), counts.end(), offsets.begin(), 0);
-  std::vector<MUMPS_INT> all_rows(instance->n);
-  MPI_Allgatherv(solution_rows.data(),
-                 n_solution_rows,
-                 MPI_INT,
-                 all_rows.data(),
-                 counts.data(),
-                 offsets.data(),
-                 MPI_INT,
-                 communicator);
-  std::vector<double> all_values(instance->n);
-  for (std::size_t j = 0; j < k; ++j)
-  {
-    MPI_Allgatherv(&local_solution[j * instance->lsol_loc],
-                   n_solution_rows,
-                   MPI_DOUBLE,
-                   all_values.data(),
-                   counts.data(),
-                   offsets.data(),
-                   MPI_DOUBLE,
-                   communicator);
-    for (MUMPS_INT p = 0; p < instance->n; ++p)
-      solutions[j][all_rows[p] - 1] = all_values[p];
-  }
+  send_to_owners(solution_rows, local_solution, n_solution_rows, solutions);
   return solutions;
+}
+
+void MumpsSolver::send_to_owners(const std::vector<int>& solution_rows,
+                                 const std::vector<double>& local_solution,
+                                 const int n_solution_rows,
+                                 std::vector<DistributedVector>& solutions) const
+{
+  const int k       = static_cast<int>(solutions.size());
+  const int n_ranks = static_cast<int>(Utilities::MPI::n_mpi_processes(communicator));
+  // The rank of each row: the run of owned rows that holds it (the runs partition 1..n).
+  std::vector<int> destination(n_solution_rows), send_counts(n_ranks, 0);
+  for (int p = 0; p < n_solution_rows; ++p)
+  {
+    const auto run = std::upper_bound(owner_runs.begin(),
+                                      owner_runs.end(),
+                                      std::pair{solution_rows[p], n_ranks}) -
+                     1;
+    destination[p] = run->second;
+    ++send_counts[destination[p]];
+  }
+  std::vector<int> receive_counts(n_ranks);
+  int rc = MPI_Alltoall(
+      send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, communicator);
+  AssertThrowMPI(rc);
+  std::vector<int> send_offsets(n_ranks), receive_offsets(n_ranks);
+  std::exclusive_scan(send_counts.begin(), send_counts.end(), send_offsets.begin(), 0);
+  std::exclusive_scan(receive_counts.begin(), receive_counts.end(), receive_offsets.begin(), 0);
+  // Rows, and the k values of each row (row by row), packed by destination.
+  std::vector<int> send_rows(n_solution_rows), next = send_offsets;
+  std::vector<double> send_values(static_cast<std::size_t>(n_solution_rows) * k);
+  for (int p = 0; p < n_solution_rows; ++p)
+  {
+    const int slot  = next[destination[p]]++;
+    send_rows[slot] = solution_rows[p];
+    for (int j = 0; j < k; ++j)
+      send_values[static_cast<std::size_t>(slot) * k + j] =
+          local_solution[static_cast<std::size_t>(j) * instance->lsol_loc + p];
+  }
+  const int n_received = receive_offsets.back() + receive_counts.back();
+  std::vector<int> received_rows(n_received);
+  std::vector<double> received_values(static_cast<std::size_t>(n_received) * k);
+  rc = MPI_Alltoallv(send_rows.data(),
+                     send_counts.data(),
+                     send_offsets.data(),
+                     MPI_INT,
+                     received_rows.data(),
+                     receive_counts.data(),
+                     receive_offsets.data(),
+                     MPI_INT,
+                     communicator);
+  AssertThrowMPI(rc);
+  for (auto* counts : {&send_counts, &send_offsets, &receive_counts, &receive_offsets})
+    for (int& count : *counts)
+      count *= k;
+  rc = MPI_Alltoallv(send_values.data(),
+                     send_counts.data(),
+                     send_offsets.data(),
+                     MPI_DOUBLE,
+                     received_values.data(),
+                     receive_counts.data(),
+                     receive_offsets.data(),
+                     MPI_DOUBLE,
+                     communicator);
+  AssertThrowMPI(rc);
+  const Utilities::MPI::Partitioner& rows = *solutions.front().get_partitioner();
+  for (int p = 0; p < n_received; ++p)
+  {
+    const unsigned int local = rows.global_to_local(received_rows[p] - 1);
+    for (int j = 0; j < k; ++j)
+      solutions[j].local_element(local) = received_values[static_cast<std::size_t>(p) * k + j];
+  }
 }
 } // namespace dyncontact

@@ -104,6 +104,11 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
   if (multiplier_rows_owner)
     locally_owned_rows.add_range(n_dofs, n_total);
   locally_owned_rows.compress();
+  AssertThrow(locally_owned_rows.is_contiguous(),
+              ExcMessage("SaddlePointSystem needs each rank's DoFs to be one range, the last "
+                         "rank's the highest (as the DoFHandler numbers them by subdomain)"));
+  row_partitioner =
+      std::make_shared<Utilities::MPI::Partitioner>(locally_owned_rows, communicator);
   system_matrix.reinit(
       locally_owned_rows,
       locally_owned_rows,
@@ -149,31 +154,32 @@ void SaddlePointSystem<dim>::add_diagonal(const unsigned int multiplier, const d
 }
 
 template <int dim>
-Vector<double> SaddlePointSystem<dim>::stack(const Vector<double>& displacement_rows,
-                                             const Vector<double>& multiplier_rows) const
+DistributedVector SaddlePointSystem<dim>::stack(const Vector<double>& displacement_rows,
+                                                const Vector<double>& multiplier_rows) const
 {
   AssertDimension(displacement_rows.size(), n_dofs);
   AssertDimension(multiplier_rows.size(), n_multipliers);
-  Vector<double> whole(n_dofs + n_multipliers);
-  for (types::global_dof_index i = 0; i < n_dofs; ++i)
-    whole[i] = displacement_rows[i];
-  for (unsigned int j = 0; j < n_multipliers; ++j)
-    whole[n_dofs + j] = multiplier_rows[j];
-  return whole;
+  DistributedVector stacked(row_partitioner);
+  for (unsigned int i = 0; i < stacked.locally_owned_size(); ++i)
+  {
+    const types::global_dof_index row = row_partitioner->local_to_global(i);
+    stacked.local_element(i) =
+        row < n_dofs ? displacement_rows[row] : multiplier_rows[row - n_dofs];
+  }
+  return stacked;
 }
 
 template <int dim>
-void SaddlePointSystem<dim>::split(const Vector<double>& whole,
+void SaddlePointSystem<dim>::split(const DistributedVector& stacked,
                                    Vector<double>& displacement_part,
                                    Vector<double>& multiplier_part) const
 {
-  AssertDimension(whole.size(), n_dofs + n_multipliers);
+  AssertDimension(stacked.size(), n_dofs + n_multipliers);
+  const Vector<double> whole = gather_whole(stacked);
   displacement_part.reinit(n_dofs);
   multiplier_part.reinit(n_multipliers);
-  for (types::global_dof_index i = 0; i < n_dofs; ++i)
-    displacement_part[i] = whole[i];
-  for (unsigned int j = 0; j < n_multipliers; ++j)
-    multiplier_part[j] = whole[n_dofs + j];
+  std::copy_n(whole.begin(), n_dofs, displacement_part.begin());
+  std::copy_n(whole.begin() + n_dofs, n_multipliers, multiplier_part.begin());
 }
 
 template <int dim>
@@ -357,23 +363,29 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
   const unsigned int m = multipliers.size();
   const auto index_of  = [&](const types::global_dof_index row)
   { return std::lower_bound(multipliers.begin(), multipliers.end(), row) - multipliers.begin(); };
-  std::vector<Vector<double>> columns_u(2 * m, Vector<double>(system_matrix.m()));
+  // U's columns hold this rank's rows only.
+  std::vector<DistributedVector> columns_u(2 * m, DistributedVector(row_partitioner));
   std::vector<LowRankUpdate::SparseColumn> columns_v(2 * m);
+  const auto set_u = [&](const unsigned int column, const types::global_dof_index row, double value)
+  {
+    if (locally_owned_rows.is_element(row))
+      columns_u[column](row) = value;
+  };
   for (const MatrixChange& change : all_changes)
     if (change.row >= n_dofs)
       columns_v[index_of(change.row)].emplace_back(change.column, change.difference);
     else
-      columns_u[m + index_of(change.column)][change.row] = change.difference;
+      set_u(m + index_of(change.column), change.row, change.difference);
   for (unsigned int j = 0; j < m; ++j)
   {
-    columns_u[j][multipliers[j]] = 1.;
-    columns_v[m + j]             = {{multipliers[j], 1.}};
+    set_u(j, multipliers[j], 1.);
+    columns_v[m + j] = {{multipliers[j], 1.}};
   }
   try
   {
     return LowRankUpdate(columns_u,
                          std::move(columns_v),
-                         [this](const std::vector<Vector<double>>& b)
+                         [this](const std::vector<DistributedVector>& b)
                          { return direct_solver.solve(b); });
   }
   catch (const SolverFailure&)
@@ -383,9 +395,9 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
 }
 
 template <int dim>
-Vector<double> SaddlePointSystem<dim>::solve(const Vector<double>& right_hand_side)
+DistributedVector SaddlePointSystem<dim>::solve(const DistributedVector& right_hand_side)
 {
-  Vector<double> solution = direct_solver.solve(right_hand_side);
+  DistributedVector solution = direct_solver.solve(right_hand_side);
   return low_rank ? low_rank->correct(solution) : solution;
 }
 

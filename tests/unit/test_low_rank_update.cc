@@ -15,9 +15,9 @@ namespace
 {
 constexpr double tolerance = 1e-12; // see the file comment
 
-Vector<double> to_vector(const Eigen::VectorXd& values)
+DistributedVector to_vector(const Eigen::VectorXd& values)
 {
-  Vector<double> result(values.size());
+  DistributedVector result(values.size()); // one rank: every entry owned
   for (unsigned int i = 0; i < result.size(); ++i)
     result[i] = values(i);
   return result;
@@ -33,7 +33,7 @@ LowRankUpdate::SparseColumn to_sparse(const Eigen::VectorXd& values)
   return result;
 }
 
-Eigen::VectorXd to_eigen(const Vector<double>& values)
+Eigen::VectorXd to_eigen(const DistributedVector& values)
 {
   Eigen::VectorXd result(values.size());
   for (unsigned int i = 0; i < values.size(); ++i)
@@ -59,9 +59,9 @@ TEST(LowRankUpdate, SolvesTheUpdatedMatrixAsADirectSolveDoes)
   const unsigned int n     = 7;
   const Eigen::MatrixXd a0 = base_matrix(n);
   const Eigen::PartialPivLU<Eigen::MatrixXd> a0_lu(a0);
-  const LowRankUpdate::Solver solve_a0 = [&](const std::vector<Vector<double>>& columns)
+  const LowRankUpdate::Solver solve_a0 = [&](const std::vector<DistributedVector>& columns)
   {
-    std::vector<Vector<double>> solutions;
+    std::vector<DistributedVector> solutions;
     for (const auto& b : columns)
       solutions.push_back(to_vector(a0_lu.solve(to_eigen(b))));
     return solutions;
@@ -79,7 +79,7 @@ TEST(LowRankUpdate, SolvesTheUpdatedMatrixAsADirectSolveDoes)
         u(i, j) = std::cos(0.3 + i + 2. * j);
         v(i, j) = (i + j) % 3 == 0 ? 0. : std::sin(0.7 + 2. * i + j); // sparse, as in contact
       }
-    std::vector<Vector<double>> columns_u;
+    std::vector<DistributedVector> columns_u;
     std::vector<LowRankUpdate::SparseColumn> columns_v;
     for (unsigned int j = 0; j < k; ++j)
     {
@@ -88,8 +88,8 @@ TEST(LowRankUpdate, SolvesTheUpdatedMatrixAsADirectSolveDoes)
     }
     const LowRankUpdate update(columns_u, columns_v, solve_a0);
     EXPECT_EQ(update.rank(), k);
-    const Vector<double> y         = solve_a0({to_vector(b)})[0];
-    const Vector<double> x         = update.correct(y);
+    const DistributedVector y         = solve_a0({to_vector(b)})[0];
+    const DistributedVector x         = update.correct(y);
     const Eigen::VectorXd expected = (a0 + u * v.transpose()).fullPivLu().solve(b);
     double largest_correction      = 0.;
     for (unsigned int i = 0; i < n; ++i)
@@ -105,10 +105,10 @@ TEST(LowRankUpdate, SolvesTheUpdatedMatrixAsADirectSolveDoes)
 TEST(LowRankUpdate, SingularUpdateIsASolverFailure)
 {
   const unsigned int n = 3;
-  Vector<double> e0(n);
+  DistributedVector e0(n);
   e0[0] = 1.;
   const LowRankUpdate::SparseColumn minus_e0{{0, -1.}};
-  const LowRankUpdate::Solver identity = [](const std::vector<Vector<double>>& b) { return b; };
+  const LowRankUpdate::Solver identity = [](const std::vector<DistributedVector>& b) { return b; };
   try
   {
     const LowRankUpdate update({e0}, {minus_e0}, identity);

@@ -65,20 +65,20 @@ void fill(const Eigen::MatrixXd& dense, TrilinosWrappers::SparseMatrix& matrix)
 }
 
 /** Right-hand side number `column`: a different smooth vector for each. */
-Vector<double> right_hand_side(const unsigned int column)
+DistributedVector right_hand_side(const unsigned int column)
 {
-  Vector<double> rhs(n);
+  DistributedVector rhs(n);
   for (unsigned int i = 0; i < n; ++i)
     rhs[i] = std::cos(1. + 2. * i + 0.9 * column);
   return rhs;
 }
 
 double largest_difference_from_dense_solve(const Eigen::MatrixXd& dense,
-                                           const Vector<double>& rhs,
-                                           const Vector<double>& solution)
+                                           const DistributedVector& rhs,
+                                           const DistributedVector& solution)
 {
   const Eigen::VectorXd reference =
-      dense.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(rhs.data(), n));
+      dense.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(rhs.begin(), n));
   double largest = 0.;
   for (unsigned int i = 0; i < n; ++i)
     largest = std::max(largest, std::abs(solution[i] - reference(i)));
@@ -95,7 +95,7 @@ TEST(MumpsSolver, SolvesASymmetricIndefiniteSaddlePointSystemLikeDenseLU)
     const Eigen::MatrixXd dense = saddle_point_matrix(scale);
     fill(dense, matrix);
     solver.factorize(matrix.trilinos_matrix());
-    const std::vector<Vector<double>> rhs = {right_hand_side(0)};
+    const std::vector<DistributedVector> rhs = {right_hand_side(0)};
     EXPECT_LT(largest_difference_from_dense_solve(dense, rhs[0], solver.solve(rhs)[0]), tolerance)
         << "scale " << scale;
   }
@@ -108,9 +108,9 @@ TEST(MumpsSolver, SolvesSeveralRightHandSidesInOneCall)
   const Eigen::MatrixXd dense = saddle_point_matrix(1.3);
   fill(dense, matrix);
   solver.factorize(matrix.trilinos_matrix());
-  const std::vector<Vector<double>> rhs = {
+  const std::vector<DistributedVector> rhs = {
       right_hand_side(0), right_hand_side(1), right_hand_side(2)};
-  const std::vector<Vector<double>> solutions = solver.solve(rhs);
+  const std::vector<DistributedVector> solutions = solver.solve(rhs);
   ASSERT_EQ(solutions.size(), rhs.size());
   for (unsigned int column = 0; column < rhs.size(); ++column)
     EXPECT_LT(largest_difference_from_dense_solve(dense, rhs[column], solutions[column]), tolerance)

@@ -248,6 +248,20 @@ void assemble_known_system(const TwoSprings& springs,
     system.multiplier_rows()->add_coupling(0, dof, sign * scale * constraint_scale);
   system.finish_assembly();
 }
+
+/**
+ * `whole` (the displacement rows, then the one multiplier row of this file's systems) as
+ * `system`'s distributed vector.
+ */
+template <int dim>
+DistributedVector rows(const SaddlePointSystem<dim>& system, const Vector<double>& whole)
+{
+  const unsigned int n_multipliers = 1;
+  Vector<double> displacement_rows(whole.size() - n_multipliers), multiplier_rows(n_multipliers);
+  std::copy_n(whole.begin(), displacement_rows.size(), displacement_rows.begin());
+  std::copy(whole.begin() + displacement_rows.size(), whole.end(), multiplier_rows.begin());
+  return system.stack(displacement_rows, multiplier_rows);
+}
 } // namespace
 
 TEST(SaddlePointNewton, LumpedMassIsTheHandValue)
@@ -293,7 +307,7 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePoint)
     right_hand_side[fixed_b] = 0.3;
     right_hand_side[lambda]  = 0.5;
     EXPECT_EQ(system.update_factorization(true), Update::factorization);
-    const Vector<double> solution = system.solve(right_hand_side);
+    const DistributedVector solution = system.solve(rows(system, right_hand_side));
     EXPECT_NEAR(solution[a], 0.25, tolerance);
     EXPECT_NEAR(solution[b], -0.25, tolerance);
     EXPECT_NEAR(solution[lambda], 1., tolerance);
@@ -304,20 +318,20 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePoint)
     ASSERT_EQ(multiplier_part.size(), 1u);
     EXPECT_EQ(multiplier_part[0], solution[lambda]);
     EXPECT_EQ(displacement_part[b], solution[b]);
-    const Vector<double> stacked = system.stack(displacement_part, multiplier_part);
+    const DistributedVector stacked = system.stack(displacement_part, multiplier_part);
     for (unsigned int i = 0; i < solution.size(); ++i)
       EXPECT_EQ(stacked[i], solution[i]);
 
     assemble(1.);
     EXPECT_EQ(system.update_factorization(true), Update::none);
-    const Vector<double> again = system.solve(right_hand_side);
+    const DistributedVector again = system.solve(rows(system, right_hand_side));
     for (unsigned int i = 0; i < solution.size(); ++i)
       EXPECT_EQ(again[i], solution[i]);
     EXPECT_EQ(system.n_factorizations(), 1u);
 
     assemble(2.);
     EXPECT_EQ(system.update_factorization(true), Update::factorization);
-    const Vector<double> half = system.solve(right_hand_side);
+    const DistributedVector half = system.solve(rows(system, right_hand_side));
     for (unsigned int i = 0; i < solution.size(); ++i)
       EXPECT_NEAR(half[i], 0.5 * solution[i], tolerance);
     EXPECT_EQ(system.n_factorizations(), 2u);
@@ -377,8 +391,8 @@ TEST(SaddlePointNewton, ConstantPartAndDiagonalMatchAnEntryByEntryAssembly)
               plain.displacement_scales().largest_row_sum);
     kept.update_factorization(false);
     plain.update_factorization(false);
-    const Vector<double> from_kept  = kept.solve(right_hand_side);
-    const Vector<double> from_plain = plain.solve(right_hand_side);
+    const DistributedVector from_kept  = kept.solve(rows(kept, right_hand_side));
+    const DistributedVector from_plain = plain.solve(rows(plain, right_hand_side));
     for (unsigned int i = 0; i < right_hand_side.size(); ++i)
       EXPECT_EQ(from_kept[i], from_plain[i]) << "row " << i;
   }
@@ -408,14 +422,14 @@ TEST(SaddlePointNewton, ConstraintRowChangeIsALowRankUpdateOfTheFactors)
 
     assemble_known_system(springs, 1., 1., system);
     EXPECT_EQ(system.update_factorization(true), Update::factorization);
-    const Vector<double> stale = system.solve(right_hand_side);
+    const DistributedVector stale = system.solve(rows(system, right_hand_side));
 
     assemble_known_system(springs, 1., 3., system);
     EXPECT_EQ(system.update_factorization(true), Update::low_rank);
     assemble_known_system(springs, 1., 3., fresh);
     EXPECT_EQ(fresh.update_factorization(true), Update::factorization);
-    const Vector<double> updated  = system.solve(right_hand_side);
-    const Vector<double> expected = fresh.solve(right_hand_side);
+    const DistributedVector updated = system.solve(rows(system, right_hand_side));
+    const DistributedVector expected = fresh.solve(rows(fresh, right_hand_side));
     for (unsigned int i = 0; i < expected.size(); ++i)
       EXPECT_NEAR(updated[i], expected[i], tolerance) << "unknown " << i;
     for (const auto i : {springs.a, springs.b, springs.dof_handler.n_dofs()})
@@ -425,7 +439,7 @@ TEST(SaddlePointNewton, ConstraintRowChangeIsALowRankUpdateOfTheFactors)
 
     assemble_known_system(springs, 1., 1., system);
     EXPECT_EQ(system.update_factorization(true), Update::none);
-    const Vector<double> back = system.solve(right_hand_side);
+    const DistributedVector back = system.solve(rows(system, right_hand_side));
     for (unsigned int i = 0; i < back.size(); ++i)
       EXPECT_EQ(back[i], stale[i]);
 

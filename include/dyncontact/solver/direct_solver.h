@@ -4,12 +4,10 @@
 #include <dyncontact/solver/direct_solver_package.h>
 #include <dyncontact/solver/mumps_solver.h>
 
-#include <deal.II/base/index_set.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/lac/trilinos_vector.h>
 
 #include <memory>
 #include <string>
@@ -26,8 +24,8 @@ namespace dyncontact
  * analyse() or else on the first factorize(): the pattern must stay the same for the object's
  * life (SaddlePointSystem's never changes); the values may change between calls.
  *
- * The matrix is distributed (Trilinos, rows as the matrix's); right-hand sides and solutions are
- * whole vectors (all rows) on every rank. The packages:
+ * The matrix is distributed (Trilinos); right-hand sides and solutions are distributed like its
+ * rows (DistributedVector). The packages:
  *  - KLU (Amesos_Klu): LU, the matrix gathered to rank 0; the same bits on any number of ranks;
  *  - MUMPS (MumpsSolver): LDL^T of the symmetric matrix, distributed over the ranks;
  *  - UMFPACK: LU on one rank only (the constructor throws InputError otherwise), on a serial copy.
@@ -52,17 +50,18 @@ public:
   void factorize(const TrilinosWrappers::SparseMatrix& matrix);
 
   /**
-   * matrix^{-1} right_hand_side with the last factorization; both whole (matrix.m() entries) on
-   * every rank. Collective; throws SolverFailure.
+   * matrix^{-1} right_hand_side with the last factorization; both distributed like the matrix's
+   * rows. Collective; throws SolverFailure.
    */
-  Vector<double> solve(const Vector<double>& right_hand_side);
+  DistributedVector solve(const DistributedVector& right_hand_side);
 
   /**
-   * matrix^{-1} b for each b of `right_hand_sides` (each whole on every rank). MUMPS solves all
-   * columns at once (the factors are read once; blocked, so equal to single solves to round-off);
-   * KLU and UMFPACK one column after the other. Collective; throws SolverFailure.
+   * matrix^{-1} b for each b of `right_hand_sides` (each distributed like the matrix's rows; so
+   * are the solutions). MUMPS solves all columns at once (the factors are read once; blocked, so
+   * equal to single solves to round-off); KLU and UMFPACK one column after the other. Collective;
+   * throws SolverFailure.
    */
-  std::vector<Vector<double>> solve(const std::vector<Vector<double>>& right_hand_sides);
+  std::vector<DistributedVector> solve(const std::vector<DistributedVector>& right_hand_sides);
 
   /** The number of numeric factorizations so far. */
   unsigned int n_factorizations() const { return factorizations; }
@@ -77,8 +76,6 @@ private:
   const DirectSolverPackage package;
   const MPI_Comm communicator;
   unsigned int factorizations = 0;
-  /** This rank's rows of the factorized matrix. */
-  IndexSet locally_owned_rows;
   bool analysed = false;
   /** Amesos (KLU): the problem holds the matrix; symbolic analysis once. */
   std::unique_ptr<Epetra_LinearProblem> problem;

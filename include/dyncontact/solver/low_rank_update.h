@@ -1,8 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
-
-#include <deal.II/lac/vector.h>
+#include <dyncontact/base/linear_algebra.h>
 
 #include <Eigen/Dense>
 #include <functional>
@@ -22,36 +21,38 @@ namespace dyncontact
  * (V's columns are given by their nonzero entries) and k vector updates. It serves
  * SaddlePointSystem, whose matrix changes in a few multiplier rows and columns when contact pairs
  * enter or leave the active set: a rank-2 change per multiplier instead of a new factorization.
- * Vectors are whole (all n entries) on every MPI rank, so every rank computes the same x.
+ * Vectors are distributed over the ranks (DistributedVector, each rank its owned rows, as the
+ * direct solver takes them); the k sums V^T y are made over the ranks (collective calls).
  */
 class LowRankUpdate
 {
 public:
-  /** The columns A0^{-1} b of each column b (whole vectors of n entries), all in one call. */
-  using Solver = std::function<std::vector<Vector<double>>(const std::vector<Vector<double>>&)>;
+  /** The columns A0^{-1} b of each column b (distributed, n entries in all), in one call. */
+  using Solver =
+      std::function<std::vector<DistributedVector>(const std::vector<DistributedVector>&)>;
 
   /** A sparse column of n entries: its nonzero entries (row, value), each row once. */
   using SparseColumn = std::vector<std::pair<types::global_dof_index, double>>;
 
   /**
-   * `columns_u`: the k columns of U (n entries each); `columns_v`: the k sparse columns of V
-   * (rows < n; k >= 1, the same k).
-   * Calls `solve_a0` once, with the k columns of U. Throws SolverFailure if the capacitance matrix
+   * `columns_u`: the k columns of U (n entries each, distributed); `columns_v`: the k sparse
+   * columns of V (rows < n; the same on every rank; k >= 1, the same k).
+   * Calls `solve_a0` once, with the k columns of U. Collective. Throws SolverFailure if the capacitance matrix
    * is singular or so ill-conditioned (reciprocal condition number below 1e-12) that the formula
    * would lose the solution's digits; the caller then factorizes A0 + U V^T itself.
    */
-  LowRankUpdate(const std::vector<Vector<double>>& columns_u,
+  LowRankUpdate(const std::vector<DistributedVector>& columns_u,
                 std::vector<SparseColumn> columns_v,
                 const Solver& solve_a0);
 
-  /** x = (A0 + U V^T)^{-1} b from y = A0^{-1} b (n entries). */
-  Vector<double> correct(const Vector<double>& y) const;
+  /** x = (A0 + U V^T)^{-1} b from y = A0^{-1} b (distributed as U's columns). Collective. */
+  DistributedVector correct(const DistributedVector& y) const;
 
   /** k, the number of columns of U and V. */
   unsigned int rank() const { return columns_v.size(); }
 
 private:
-  std::vector<Vector<double>> columns_z;
+  std::vector<DistributedVector> columns_z;
   std::vector<SparseColumn> columns_v;
   Eigen::PartialPivLU<Eigen::MatrixXd> capacitance;
 };

@@ -1,9 +1,9 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/base/linear_algebra.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/lac/vector.h>
 
 #include <memory>
 #include <string>
@@ -26,9 +26,10 @@ namespace dyncontact
  * or the first factorize()) reads the sparsity pattern only, in the pivot order of METIS's nested
  * dissection (METIS_NodeND, computed on rank 0 from the gathered graph); the pattern must then
  * stay the same.
- * Right-hand sides and solutions are whole vectors on every rank. MUMPS solves with them
- * distributed (each rank passes its matrix rows of the right-hand sides and receives the rows of
- * its factors), all columns of a call at once; the solutions are then gathered on every rank.
+ * Right-hand sides and solutions are distributed like the matrix's rows (DistributedVector).
+ * MUMPS solves with them distributed (each rank passes its matrix rows of the right-hand sides and
+ * receives the rows of its factors), all columns of a call at once; the solution rows are then
+ * sent to the ranks that own them (MPI_Alltoallv).
  *
  * Errors of MUMPS (a singular matrix: INFOG(1) = -10; out of memory) are thrown as SolverFailure
  * with MUMPS's error code; a factorization that ran out of its estimated workspace (INFOG(1) = -8
@@ -61,10 +62,10 @@ public:
 
   /**
    * matrix^{-1} b for each b of `right_hand_sides` with the last factorization, in one MUMPS solve
-   * (NRHS = their number: the factors are read once for all). Each right-hand side and solution
-   * is whole (all n rows) on every rank. Collective; throws SolverFailure.
+   * (NRHS = their number: the factors are read once for all). Each right-hand side is distributed
+   * like the matrix's rows, and so is each solution. Collective; throws SolverFailure.
    */
-  std::vector<Vector<double>> solve(const std::vector<Vector<double>>& right_hand_sides);
+  std::vector<DistributedVector> solve(const std::vector<DistributedVector>& right_hand_sides);
 
   /**
    * MUMPS's own figures of the last factorization, as one line: the flops of the elimination in
@@ -81,6 +82,16 @@ private:
   /** Runs MUMPS's `job` and throws SolverFailure naming `phase` if it failed. */
   void run(int job, const char* phase);
 
+  /**
+   * Sends the n_solution_rows rows `solution_rows` (1-based) of MUMPS's distributed solution
+   * (`local_solution`, column j at j * LSOL_loc) to the ranks that own them and writes them
+   * into `solutions` (one per column). Collective (MPI_Alltoallv).
+   */
+  void send_to_owners(const std::vector<int>& solution_rows,
+                      const std::vector<double>& local_solution,
+                      int n_solution_rows,
+                      std::vector<DistributedVector>& solutions) const;
+
   const MPI_Comm communicator;
   std::unique_ptr<Instance> instance;
   /** This rank's entries on and above the diagonal, 1-based global indices, in row order. */
@@ -88,6 +99,8 @@ private:
   std::vector<double> values;
   /** This rank's rows of the matrix, 1-based: its rows of the right-hand sides. */
   std::vector<int> owned_rows;
+  /** Every rank's runs of consecutive owned rows: (first row, 1-based; rank), sorted. */
+  std::vector<std::pair<int, int>> owner_runs;
   bool analysed = false;
   /** The largest rank's elimination flops of the last factorization (RINFO(3) over the ranks). */
   double busiest_rank_flops = 0;

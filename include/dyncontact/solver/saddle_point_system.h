@@ -1,18 +1,21 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/base/linear_algebra.h>
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact/multiplier_block.h>
 #include <dyncontact/solver/direct_solver.h>
 #include <dyncontact/solver/low_rank_update.h>
 
 #include <deal.II/base/index_set.h>
+#include <deal.II/base/partitioner.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -54,8 +57,8 @@ struct TangentScales
  * multiplier's diagonal. Parallel layout: rows are distributed like the DoFs, the multiplier rows
  * belong to the last MPI rank; each rank's pattern holds the full rows it writes (those of its
  * locally owned cells and, on the last rank, the constraint rows and the DoFs they couple to);
- * entries in rows owned elsewhere are sent on finish_assembly(). Vectors passed in and out are
- * whole (all n_dofs + n_multipliers entries) on every rank.
+ * entries in rows owned elsewhere are sent on finish_assembly(). Vectors over all unknowns are
+ * distributed like the rows (DistributedVector); stack() and split() join and part them.
  *
  * The direct solve keeps its factorization (DirectSolver; the symbolic analysis of the fixed
  * pattern is done by the constructor, in the set-up); update_factorization() brings it up to date
@@ -121,14 +124,18 @@ public:
   void add_to_diagonal(const Vector<double>& diagonal, double factor);
 
   /**
-   * The vector over all unknowns of `displacement_rows` (n_dofs entries) followed by
-   * `multiplier_rows` (n_multipliers entries).
+   * The vector over all unknowns, distributed like the rows (this rank's), of
+   * `displacement_rows` (n_dofs entries, whole) followed by `multiplier_rows` (n_multipliers
+   * entries, whole).
    */
-  Vector<double> stack(const Vector<double>& displacement_rows,
-                       const Vector<double>& multiplier_rows) const;
+  DistributedVector stack(const Vector<double>& displacement_rows,
+                          const Vector<double>& multiplier_rows) const;
 
-  /** The parts of `whole` (over all unknowns) that stack() joins. */
-  void split(const Vector<double>& whole,
+  /**
+   * The parts of `stacked` (over all unknowns, distributed like the rows) that stack() joins,
+   * each whole on every rank (gathered: collective).
+   */
+  void split(const DistributedVector& stacked,
              Vector<double>& displacement_part,
              Vector<double>& multiplier_part) const;
 
@@ -185,10 +192,10 @@ public:
   /**
    * Solves matrix * solution = right_hand_side with the solver of the last update_factorization()
    * (which must have been called since the last assembly); both vectors have
-   * n_dofs + n_multipliers entries and are whole on every rank. Throws SolverFailure if the solve
-   * fails.
+   * n_dofs + n_multipliers entries, distributed like the rows (stack(), split()). Collective;
+   * throws SolverFailure if the solve fails.
    */
-  Vector<double> solve(const Vector<double>& right_hand_side);
+  DistributedVector solve(const DistributedVector& right_hand_side);
 
   /** The number of numeric factorizations so far. */
   unsigned int n_factorizations() const { return direct_solver.n_factorizations(); }
@@ -224,8 +231,10 @@ private:
   const bool multiplier_rows_owner;
   /** The locally owned DoFs of the DoFHandler (the displacement rows of this rank). */
   const IndexSet locally_owned_dofs;
-  /** This rank's rows: its DoFs and, on the last rank, the multiplier rows. */
+  /** This rank's rows: its DoFs and, on the last rank, the multiplier rows (one range). */
   IndexSet locally_owned_rows;
+  /** The layout of vectors over the rows, as the direct solver takes them. */
+  std::shared_ptr<const Utilities::MPI::Partitioner> row_partitioner;
   const AffineConstraints<double>& constraints;
   Matrix system_matrix;
   DirectSolver direct_solver;

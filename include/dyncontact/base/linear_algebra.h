@@ -1,0 +1,25 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/vector.h>
+
+namespace dyncontact
+{
+/**
+ * A vector distributed over the ranks of a communicator like the rows of a matrix: each rank
+ * stores the entries of its locally owned rows (deal.II's LinearAlgebra::distributed::Vector;
+ * local_element(i) is the i-th owned row in ascending order). The unknowns of
+ * SaddlePointSystem (displacement DoFs, then multipliers) travel through the direct solver in
+ * this form (issue 27, move 5: owned vectors in place of whole ones on every rank).
+ */
+using DistributedVector = LinearAlgebra::distributed::Vector<double>;
+
+/**
+ * The whole of `vector` (all size() entries) on every rank: each rank's owned entries gathered
+ * to all (MPI_Allgatherv). Collective. For the parts of the code that still work on whole
+ * vectors.
+ */
+Vector<double> gather_whole(const DistributedVector& vector);
+} // namespace dyncontact
