@@ -33,4 +33,11 @@ Vector<double> gather_whole(const DistributedVector& vector)
       whole[row] = *value++;
   return whole;
 }
+
+void copy_owned_entries(const Vector<double>& whole, DistributedVector& vector)
+{
+  AssertDimension(whole.size(), vector.size());
+  for (unsigned int i = 0; i < vector.locally_owned_size(); ++i)
+    vector.local_element(i) = whole[vector.get_partitioner()->local_to_global(i)];
+}
 } // namespace dyncontact

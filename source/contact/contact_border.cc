@@ -68,6 +68,15 @@ void ContactBorder<dim>::scatter_add(const Vector<double>& border, Vector<double
 }
 
 template <int dim>
+void ContactBorder<dim>::scatter_add(const Vector<double>& border, DistributedVector& volume) const
+{
+  AssertDimension(border.size(), n_dofs());
+  for (unsigned int i = 0; i < border.size(); ++i)
+    if (volume.in_local_range(volume_dof(i)))
+      volume(volume_dof(i)) += border[i];
+}
+
+template <int dim>
 void ContactBorder<dim>::scatter(const Vector<double>& border, Vector<double>& volume) const
 {
   AssertDimension(border.size(), n_dofs());

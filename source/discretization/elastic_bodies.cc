@@ -210,6 +210,17 @@ ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
     }
     cells.push_back(std::move(data));
   }
+  IndexSet cell_dofs(dof_handler.n_dofs());
+  for (const CellData& data : cells)
+  {
+    std::vector<types::global_dof_index> sorted = data.dofs;
+    std::sort(sorted.begin(), sorted.end());
+    cell_dofs.add_indices(sorted.begin(), sorted.end());
+  }
+  force_layout = std::make_shared<Utilities::MPI::Partitioner>(
+      dof_handler.locally_owned_dofs(),
+      cell_dofs,
+      dof_handler.get_triangulation().get_communicator());
 
   constant_tangent =
       std::all_of(this->bodies.begin(),
@@ -353,7 +364,7 @@ double ElasticBodies<dim>::highest_frequency_bound(const std::vector<bool>& fixe
 
 template <int dim>
 void ElasticBodies<dim>::assemble_internal_force(const Vector<double>& displacement,
-                                                 Vector<double>& internal_force,
+                                                 DistributedVector& internal_force,
                                                  TrilinosWrappers::SparseMatrix* tangent,
                                                  double* strain_energy) const
 {
@@ -378,13 +389,13 @@ void ElasticBodies<dim>::add_constant_tangent(TrilinosWrappers::SparseMatrix& ta
 template <int dim>
 template <typename MatrixType>
 void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
-                                   Vector<double>* internal_force,
+                                   DistributedVector* internal_force,
                                    MatrixType* tangent,
                                    double* strain_energy) const
 {
   const unsigned int n_local = local_component.size();
   if (internal_force != nullptr)
-    internal_force->reinit(dof_handler.n_dofs());
+    internal_force->reinit(force_layout);
   if (strain_energy != nullptr)
     *strain_energy = 0.;
   // A failing material point (an inverted element) must not leave this rank out of the
@@ -438,7 +449,7 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
                   CellContribution(n_local));
 
   if (internal_force != nullptr)
-    sum_over_ranks(*internal_force, dof_handler.get_triangulation().get_communicator());
+    internal_force->compress(VectorOperation::add);
   if (strain_energy != nullptr)
     *strain_energy =
         Utilities::MPI::sum(*strain_energy, dof_handler.get_triangulation().get_communicator());

@@ -22,16 +22,16 @@ struct ContactNewtonSolver<dim>::Iteration
   /** The state before the last Newton update, to which the line search returns. */
   struct StateBeforeUpdate
   {
-    Vector<double> increment;
+    DistributedVector increment;
     typename ContactConstraints<dim>::State contact;
     double merit; ///< the line search's measure of the residual, see DynamicResidual::Figures
     double force_residual; ///< |r| before the update, to tell convergence from round-off
   };
 
   const typename DynamicResidual<dim>::Step step;
-  Vector<double>& increment;              ///< u - u~, the caller's vector
-  Vector<double> last_configuration = {}; ///< u_n
-  Vector<double> displacement       = {};
+  DistributedVector increment;            ///< u - u~, this rank's owned DoFs
+  Vector<double> last_configuration = {}; ///< u_n (whole), for alpha_f > 0 only
+  Vector<double> displacement       = {}; ///< u~ + increment, whole
   bool active_set_changed           = false;
   bool restarted                    = false;
   unsigned int linear_solves        = 0;
@@ -39,7 +39,7 @@ struct ContactNewtonSolver<dim>::Iteration
   std::optional<StateBeforeUpdate> before_update = {};
   /** Modified Newton: the active set at which this step's tangent was assembled (empty: none). */
   std::optional<std::vector<bool>> tangent_active_set = {};
-  Vector<double> newton_update                        = {}; ///< of the displacement
+  DistributedVector newton_update                     = {}; ///< of the displacement, owned DoFs
   Vector<double> multiplier_update                    = {};
   double step_length                                  = 1.;
 };
@@ -65,6 +65,8 @@ ContactNewtonSolver<dim>::ContactNewtonSolver(const DoFHandler<dim>& dof_handler
       gap_tolerance((parameters.residual_tolerance + DynamicResidual<dim>::roundoff_factor) *
                     length_scale),
       timer(timer), alpha_f(alpha_f),
+      owned_dofs(std::make_shared<Utilities::MPI::Partitioner>(
+          dof_handler.locally_owned_dofs(), dof_handler.get_triangulation().get_communicator())),
       system(dof_handler, contact, constraints, parameters.direct_solver),
       residual(bodies, contact, lumped_mass, constraints)
 {
@@ -79,9 +81,13 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
                                 const Vector<double>& restart_increment,
                                 Vector<double>& increment)
 {
-  Iteration iteration{{predictor, inertia_factor, external_force}, increment};
-  iteration.last_configuration = predictor;
-  iteration.last_configuration += restart_increment;
+  Iteration iteration{{predictor, inertia_factor, external_force}, DistributedVector(owned_dofs)};
+  copy_owned_entries(increment, iteration.increment);
+  if (alpha_f != 0.)
+  {
+    iteration.last_configuration = predictor;
+    iteration.last_configuration += restart_increment;
+  }
   // A pair enters when the unconstrained predicted gap is negative.
   enter(iteration);
   // The first evaluation of a step (the initial guess, which often is the answer, e.g. in free
@@ -102,7 +108,10 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     const bool reuse_tangent = with_tangent && may_reuse_tangent(iteration);
     Evaluation evaluation    = evaluate(iteration, with_tangent && !reuse_tangent);
     if (evaluation.failure.empty() && has_converged(iteration, evaluation.figures))
+    {
+      increment = gather_whole(iteration.increment);
       return {iteration.linear_solves};
+    }
     with_tangent = true;
 
     // The initial guess is not the answer (or cannot be evaluated): Newton starts from the last
@@ -141,7 +150,7 @@ void ContactNewtonSolver<dim>::restart(Iteration& iteration,
                                        const Vector<double>& restart_increment)
 {
   iteration.restarted = true;
-  iteration.increment = restart_increment;
+  copy_owned_entries(restart_increment, iteration.increment);
   enter(iteration);
 }
 
@@ -163,11 +172,17 @@ bool ContactNewtonSolver<dim>::converging_slowly(
 template <int dim>
 void ContactNewtonSolver<dim>::enter(Iteration& iteration)
 {
-  iteration.displacement = iteration.step.predictor;
-  iteration.displacement += iteration.increment;
+  set_displacement(iteration);
   move_master_points(iteration);
   iteration.active_set_changed =
       contact.update_active_set(iteration.displacement, gap_tolerance, 0.);
+}
+
+template <int dim>
+void ContactNewtonSolver<dim>::set_displacement(Iteration& iteration) const
+{
+  iteration.displacement = iteration.step.predictor;
+  iteration.displacement += gather_whole(iteration.increment);
 }
 
 template <int dim>
@@ -274,6 +289,8 @@ void ContactNewtonSolver<dim>::take_newton_update(
 {
   DistributedVector right_hand_side =
       system.stack(residual.force_rows(), residual.constraint_rows());
+  if (iteration.newton_update.size() == 0)
+    iteration.newton_update.reinit(owned_dofs);
   right_hand_side *= -1.;
   // Modified Newton reuses what it can: low-rank updates of the factors for pairs entering or
   // leaving; full Newton keeps fresh factorizations of every changed tangent (the reference).
@@ -295,10 +312,9 @@ void ContactNewtonSolver<dim>::move_along_update(Iteration& iteration, const dou
 {
   const double length = iteration.step_length;
   iteration.increment = iteration.before_update->increment;
-  for (types::global_dof_index i = 0; i < iteration.increment.size(); ++i)
-    iteration.increment[i] += length * iteration.newton_update[i];
-  iteration.displacement = iteration.step.predictor;
-  iteration.displacement += iteration.increment;
+  for (unsigned int i = 0; i < iteration.increment.locally_owned_size(); ++i)
+    iteration.increment.local_element(i) += length * iteration.newton_update.local_element(i);
+  set_displacement(iteration);
 
   contact.restore(iteration.before_update->contact);
   Vector<double> multiplier_increment = iteration.multiplier_update;

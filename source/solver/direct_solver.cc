@@ -66,8 +66,8 @@ void DirectSolver::analyse(const TrilinosWrappers::SparseMatrix& matrix)
   }
   else
   {
-    const char* name   = "Amesos_Klu";
-    problem            = std::make_unique<Epetra_LinearProblem>();
+    const char* name = "Amesos_Klu";
+    problem          = std::make_unique<Epetra_LinearProblem>();
     problem->SetOperator(const_cast<Epetra_CrsMatrix*>(&epetra));
     Amesos factory;
     amesos.reset(factory.Create(name, *problem));

@@ -12,10 +12,8 @@ DynamicResidual<dim>::DynamicResidual(const ElasticBodies<dim>& bodies,
                                       const Vector<double>& lumped_mass,
                                       const AffineConstraints<double>& constraints)
     : bodies(bodies), contact(contact), lumped_mass(lumped_mass),
-      is_fixed(lumped_mass.size(), false), inertia_force(lumped_mass.size()),
-      contact_force(lumped_mass.size()),
-      constraint_residual(contact.multiplier_block().n_multipliers()),
-      force_residual(lumped_mass.size())
+      is_fixed(lumped_mass.size(), false),
+      constraint_residual(contact.multiplier_block().n_multipliers())
 {
   for (types::global_dof_index i = 0; i < is_fixed.size(); ++i)
     is_fixed[i] = constraints.is_constrained(i);
@@ -24,7 +22,7 @@ DynamicResidual<dim>::DynamicResidual(const ElasticBodies<dim>& bodies,
 template <int dim>
 typename DynamicResidual<dim>::Figures
 DynamicResidual<dim>::evaluate(const Step& step,
-                               const Vector<double>& increment,
+                               const DistributedVector& increment,
                                const Vector<double>& displacement,
                                SaddlePointSystem<dim>* tangent)
 {
@@ -45,7 +43,7 @@ void DynamicResidual<dim>::keep_constant_tangent(SaddlePointSystem<dim>& tangent
 
 template <int dim>
 void DynamicResidual<dim>::assemble(const Step& step,
-                                    const Vector<double>& increment,
+                                    const DistributedVector& increment,
                                     const Vector<double>& displacement,
                                     SaddlePointSystem<dim>* tangent)
 {
@@ -72,15 +70,16 @@ void DynamicResidual<dim>::assemble(const Step& step,
       tangent->finish_assembly(); // flush entries added before the failure
     throw;
   }
-  for (types::global_dof_index i = 0; i < inertia_force.size(); ++i)
-    inertia_force[i] = step.inertia_factor * lumped_mass[i] * increment[i];
+  inertia_force.reinit(internal_force_values, /*omit_zeroing_entries=*/true);
+  for (const auto i : increment.locally_owned_elements())
+    inertia_force(i) = step.inertia_factor * lumped_mass[i] * increment(i);
   if (tangent != nullptr)
     tangent->add_to_diagonal(lumped_mass, step.inertia_factor);
   // The contact layer works on the contact border: G^T lambda there, scattered to the volume.
   const ContactBorder<dim>& border = contact.border();
   Vector<double> border_force(border.n_dofs());
   contact.add_contact_forces(border_force);
-  contact_force = 0.;
+  contact_force.reinit(internal_force_values);
   border.scatter_add(border_force, contact_force);
   contact.assemble_constraint_rows(border.gather(displacement),
                                    inactive_diagonal,
@@ -97,14 +96,17 @@ template <int dim>
 typename DynamicResidual<dim>::Figures
 DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double>& displacement)
 {
+  force_residual.reinit(internal_force_values, /*omit_zeroing_entries=*/true);
   double force_residual_squared = 0.;
-  for (types::global_dof_index i = 0; i < force_residual.size(); ++i)
+  for (const auto i : force_residual.locally_owned_elements())
   {
-    force_residual[i] = is_fixed[i] ? 0.
-                                    : inertia_force[i] + internal_force_values[i] -
-                                          step.external_force[i] - contact_force[i];
-    force_residual_squared += force_residual[i] * force_residual[i];
+    force_residual(i) = is_fixed[i] ? 0.
+                                    : inertia_force(i) + internal_force_values(i) -
+                                          step.external_force[i] - contact_force(i);
+    force_residual_squared += force_residual(i) * force_residual(i);
   }
+  force_residual_squared =
+      Utilities::MPI::sum(force_residual_squared, force_residual.get_mpi_communicator());
   Figures figures{};
   // The reference force: the elastic, external and contact forces, not the inertia. At time
   // steps far beyond the periods of the small elements of a contact zone their inertia

@@ -2,8 +2,8 @@
 #include <dyncontact/solver/mumps_solver.h>
 
 #include <Epetra_CrsMatrix.h>
-#include <dmumps_c.h>
 #include <algorithm>
+#include <dmumps_c.h>
 #include <iomanip>
 #include <metis.h>
 #include <numeric>
@@ -276,8 +276,8 @@ void MumpsSolver::send_to_owners(const std::vector<int>& solution_rows,
     ++send_counts[destination[p]];
   }
   std::vector<int> receive_counts(n_ranks);
-  int rc = MPI_Alltoall(
-      send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, communicator);
+  int rc =
+      MPI_Alltoall(send_counts.data(), 1, MPI_INT, receive_counts.data(), 1, MPI_INT, communicator);
   AssertThrowMPI(rc);
   std::vector<int> send_offsets(n_ranks), receive_offsets(n_ranks);
   std::exclusive_scan(send_counts.begin(), send_counts.end(), send_offsets.begin(), 0);

@@ -107,8 +107,7 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
   AssertThrow(locally_owned_rows.is_contiguous(),
               ExcMessage("SaddlePointSystem needs each rank's DoFs to be one range, the last "
                          "rank's the highest (as the DoFHandler numbers them by subdomain)"));
-  row_partitioner =
-      std::make_shared<Utilities::MPI::Partitioner>(locally_owned_rows, communicator);
+  row_partitioner = std::make_shared<Utilities::MPI::Partitioner>(locally_owned_rows, communicator);
   system_matrix.reinit(
       locally_owned_rows,
       locally_owned_rows,
@@ -154,32 +153,41 @@ void SaddlePointSystem<dim>::add_diagonal(const unsigned int multiplier, const d
 }
 
 template <int dim>
-DistributedVector SaddlePointSystem<dim>::stack(const Vector<double>& displacement_rows,
+DistributedVector SaddlePointSystem<dim>::stack(const DistributedVector& displacement_rows,
                                                 const Vector<double>& multiplier_rows) const
 {
   AssertDimension(displacement_rows.size(), n_dofs);
+  AssertDimension(displacement_rows.locally_owned_size(), locally_owned_dofs.n_elements());
   AssertDimension(multiplier_rows.size(), n_multipliers);
   DistributedVector stacked(row_partitioner);
-  for (unsigned int i = 0; i < stacked.locally_owned_size(); ++i)
-  {
-    const types::global_dof_index row = row_partitioner->local_to_global(i);
-    stacked.local_element(i) =
-        row < n_dofs ? displacement_rows[row] : multiplier_rows[row - n_dofs];
-  }
+  // The rows are the owned DoFs (in the same order), then on the last rank the multipliers.
+  std::copy_n(displacement_rows.begin(), displacement_rows.locally_owned_size(), stacked.begin());
+  if (multiplier_rows_owner)
+    std::copy(multiplier_rows.begin(),
+              multiplier_rows.end(),
+              stacked.begin() + displacement_rows.locally_owned_size());
   return stacked;
 }
 
 template <int dim>
 void SaddlePointSystem<dim>::split(const DistributedVector& stacked,
-                                   Vector<double>& displacement_part,
+                                   DistributedVector& displacement_part,
                                    Vector<double>& multiplier_part) const
 {
   AssertDimension(stacked.size(), n_dofs + n_multipliers);
-  const Vector<double> whole = gather_whole(stacked);
-  displacement_part.reinit(n_dofs);
+  AssertDimension(displacement_part.locally_owned_size(), locally_owned_dofs.n_elements());
+  const auto n_owned_dofs = displacement_part.locally_owned_size();
+  std::copy_n(stacked.begin(), n_owned_dofs, displacement_part.begin());
   multiplier_part.reinit(n_multipliers);
-  std::copy_n(whole.begin(), n_dofs, displacement_part.begin());
-  std::copy_n(whole.begin() + n_dofs, n_multipliers, multiplier_part.begin());
+  if (multiplier_rows_owner)
+    std::copy_n(stacked.begin() + n_owned_dofs, n_multipliers, multiplier_part.begin());
+  const int last_rank = static_cast<int>(Utilities::MPI::n_mpi_processes(communicator)) - 1;
+  const int rc        = MPI_Bcast(multiplier_part.begin(),
+                           static_cast<int>(n_multipliers),
+                           MPI_DOUBLE,
+                           last_rank,
+                           communicator);
+  AssertThrowMPI(rc);
 }
 
 template <int dim>

@@ -24,7 +24,9 @@ void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
 {
   current.reinit(initial_velocity.size());
   current.velocity = initial_velocity;
-  bodies.assemble_internal_force(current.displacement, current.internal_force, nullptr);
+  DistributedVector internal_force;
+  bodies.assemble_internal_force(current.displacement, internal_force, nullptr);
+  current.internal_force = gather_whole(internal_force);
   current.external_force = loads.force(0.);
   for (types::global_dof_index i = 0; i < mass.size(); ++i)
   {

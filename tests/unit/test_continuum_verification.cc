@@ -178,19 +178,19 @@ Vector<double> internal_force_and_tangent(const ElasticBodies<dim>& bodies,
                                           const Vector<double>& displacement,
                                           trilinos::SparseMatrix& tangent)
 {
-  Vector<double> internal_force(displacement.size());
+  dyncontact::DistributedVector internal_force;
   tangent = 0.;
   bodies.assemble_internal_force(displacement, internal_force, &tangent);
   tangent.compress(VectorOperation::add);
-  return internal_force;
+  return dyncontact::gather_whole(internal_force);
 }
 
 template <int dim>
 Vector<double> internal_force(const ElasticBodies<dim>& bodies, const Vector<double>& displacement)
 {
-  Vector<double> force(displacement.size());
+  dyncontact::DistributedVector force;
   bodies.assemble_internal_force(displacement, force, nullptr);
-  return force;
+  return dyncontact::gather_whole(force);
 }
 
 /// Independent entries uniform in [-amplitude, amplitude].

@@ -88,8 +88,8 @@ TEST(LowRankUpdate, SolvesTheUpdatedMatrixAsADirectSolveDoes)
     }
     const LowRankUpdate update(columns_u, columns_v, solve_a0);
     EXPECT_EQ(update.rank(), k);
-    const DistributedVector y         = solve_a0({to_vector(b)})[0];
-    const DistributedVector x         = update.correct(y);
+    const DistributedVector y      = solve_a0({to_vector(b)})[0];
+    const DistributedVector x      = update.correct(y);
     const Eigen::VectorXd expected = (a0 + u * v.transpose()).fullPivLu().solve(b);
     double largest_correction      = 0.;
     for (unsigned int i = 0; i < n; ++i)

@@ -257,7 +257,8 @@ template <int dim>
 DistributedVector rows(const SaddlePointSystem<dim>& system, const Vector<double>& whole)
 {
   const unsigned int n_multipliers = 1;
-  Vector<double> displacement_rows(whole.size() - n_multipliers), multiplier_rows(n_multipliers);
+  DistributedVector displacement_rows(whole.size() - n_multipliers); // one rank: all owned
+  Vector<double> multiplier_rows(n_multipliers);
   std::copy_n(whole.begin(), displacement_rows.size(), displacement_rows.begin());
   std::copy(whole.begin() + displacement_rows.size(), whole.end(), multiplier_rows.begin());
   return system.stack(displacement_rows, multiplier_rows);
@@ -313,7 +314,8 @@ TEST(SaddlePointNewton, SystemSolvesAKnownSaddlePoint)
     EXPECT_NEAR(solution[lambda], 1., tolerance);
     EXPECT_NEAR(solution[fixed_a], 0.15, tolerance);
     EXPECT_NEAR(solution[fixed_b], 0.15, tolerance);
-    Vector<double> displacement_part, multiplier_part;
+    DistributedVector displacement_part(lambda); // one rank: every DoF owned
+    Vector<double> multiplier_part;
     system.split(solution, displacement_part, multiplier_part);
     ASSERT_EQ(multiplier_part.size(), 1u);
     EXPECT_EQ(multiplier_part[0], solution[lambda]);
@@ -428,7 +430,7 @@ TEST(SaddlePointNewton, ConstraintRowChangeIsALowRankUpdateOfTheFactors)
     EXPECT_EQ(system.update_factorization(true), Update::low_rank);
     assemble_known_system(springs, 1., 3., fresh);
     EXPECT_EQ(fresh.update_factorization(true), Update::factorization);
-    const DistributedVector updated = system.solve(rows(system, right_hand_side));
+    const DistributedVector updated  = system.solve(rows(system, right_hand_side));
     const DistributedVector expected = fresh.solve(rows(fresh, right_hand_side));
     for (unsigned int i = 0; i < expected.size(); ++i)
       EXPECT_NEAR(updated[i], expected[i], tolerance) << "unknown " << i;

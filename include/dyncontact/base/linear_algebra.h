@@ -22,4 +22,7 @@ using DistributedVector = LinearAlgebra::distributed::Vector<double>;
  * vectors.
  */
 Vector<double> gather_whole(const DistributedVector& vector);
+
+/** Sets the owned entries of `vector` to those of the whole vector `whole` (same size). */
+void copy_owned_entries(const Vector<double>& whole, DistributedVector& vector);
 } // namespace dyncontact

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/base/linear_algebra.h>
 #include <dyncontact/discretization/node_index.h>
 
 #include <deal.II/lac/vector.h>
@@ -68,6 +69,12 @@ public:
 
   /** Adds the border vector `border` into the contact nodes' entries of `volume`. */
   void scatter_add(const Vector<double>& border, Vector<double>& volume) const;
+
+  /**
+   * Adds the border vector `border` (the same on every rank) into the entries of the contact
+   * nodes that this rank owns in the distributed `volume`.
+   */
+  void scatter_add(const Vector<double>& border, DistributedVector& volume) const;
 
   /** Writes the border vector `border` into the contact nodes' entries of `volume`. */
   void scatter(const Vector<double>& border, Vector<double>& volume) const;

@@ -1,10 +1,12 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/base/linear_algebra.h>
 #include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/sparse_variation.h>
 #include <dyncontact/material/material.h>
 
+#include <deal.II/base/partitioner.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping.h>
@@ -87,13 +89,15 @@ public:
   Vector<double> lumped_mass(const std::vector<bool>& massless_dofs = {}) const;
 
   /**
-   * Internal force Q(u) into `internal_force` (overwritten) and, if `tangent` is not null, dQ/du
+   * Internal force Q(u) at `displacement` (n_dofs entries, whole; the entries at this rank's
+   * cells' DoFs are read) into `internal_force` (reinitialized: the rank's owned DoFs, the sums
+   * over all ranks' cells; collective) and, if `tangent` is not null, dQ/du
    * added into its leading n_dofs x n_dofs block (the caller zeroes it; linear bodies are better
    * served by add_constant_tangent() once), and, if `strain_energy` is not null, the strain energy
    * from the same pass.
    */
   void assemble_internal_force(const Vector<double>& displacement,
-                               Vector<double>& internal_force,
+                               DistributedVector& internal_force,
                                TrilinosWrappers::SparseMatrix* tangent,
                                double* strain_energy = nullptr) const;
 
@@ -141,7 +145,7 @@ private:
    */
   template <typename MatrixType>
   void integrate(const Vector<double>& displacement,
-                 Vector<double>* internal_force,
+                 DistributedVector* internal_force,
                  MatrixType* tangent,
                  double* strain_energy) const;
 
@@ -168,6 +172,11 @@ private:
   /** The FE component of each local DoF. */
   std::vector<unsigned int> local_component;
   std::vector<CellData> cells;
+  /**
+   * The layout of the internal force: this rank's owned DoFs, and as ghosts the other DoFs of its
+   * cells (their contributions are sent to the owners).
+   */
+  std::shared_ptr<const Utilities::MPI::Partitioner> force_layout;
   /** Every body's material is linear: dQ/du = K is constant (has_constant_tangent()). */
   bool constant_tangent;
 };

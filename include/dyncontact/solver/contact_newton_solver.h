@@ -108,14 +108,18 @@ public:
                const Vector<double>& restart_increment,
                Vector<double>& increment);
 
-  /** Q(u) at the displacement of the last residual evaluation (the converged one after solve). */
-  const Vector<double>& internal_force() const { return residual.internal_force(); }
+  /**
+   * Q(u) at the displacement of the last residual evaluation (the converged one after solve),
+   * whole (gathered: collective).
+   */
+  Vector<double> internal_force() const { return gather_whole(residual.internal_force()); }
 
   /**
    * The force rows of the last evaluated residual (the converged one after solve), n_dofs
-   * entries: c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs).
+   * entries: c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs); whole (gathered:
+   * collective).
    */
-  const Vector<double>& last_residual() const { return residual.force_rows(); }
+  Vector<double> last_residual() const { return gather_whole(residual.force_rows()); }
 
   /**
    * The scales of the last tangent (0: none yet), which scale the round-off floor and the merit
@@ -154,6 +158,9 @@ private:
    * (move_master_points()) and the active set there.
    */
   void enter(Iteration& iteration);
+
+  /** The iterate's displacement: the predictor plus the increment gathered whole (collective). */
+  void set_displacement(Iteration& iteration) const;
 
   /** Moves the pairs' master points to the iterate's (1 - alpha_f) u + alpha_f u_n. */
   void move_master_points(const Iteration& iteration);
@@ -201,6 +208,8 @@ private:
   const double gap_tolerance;
   TimerOutput& timer;
   const double alpha_f;
+  /** The layout of the iterate's increments: this rank's owned DoFs. */
+  const std::shared_ptr<const Utilities::MPI::Partitioner> owned_dofs;
   SaddlePointSystem<dim> system;
   DynamicResidual<dim> residual;
 };

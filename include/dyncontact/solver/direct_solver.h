@@ -76,7 +76,7 @@ private:
   const DirectSolverPackage package;
   const MPI_Comm communicator;
   unsigned int factorizations = 0;
-  bool analysed = false;
+  bool analysed               = false;
   /** Amesos (KLU): the problem holds the matrix; symbolic analysis once. */
   std::unique_ptr<Epetra_LinearProblem> problem;
   std::unique_ptr<Amesos_BaseSolver> amesos;

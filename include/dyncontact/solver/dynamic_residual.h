@@ -97,30 +97,33 @@ public:
   void keep_constant_tangent(SaddlePointSystem<dim>& tangent) const;
 
   /**
-   * Evaluates the residual at `displacement` = step.predictor + `increment` (both n_dofs
-   * entries) with the multipliers and active set the contact layer holds, and, if `tangent` is
-   * not null, assembles the tangent into it (from its constant part, keep_constant_tangent(), or
-   * from zero) and records its scales (TangentScales).
-   * The residual is then available from force_rows() and constraint_rows(). Without a tangent the
-   * figures use the scales of the last assembly (tangent_scales()).
+   * Evaluates the residual at `displacement` = step.predictor + `increment` (n_dofs entries:
+   * the displacement whole, the increment this rank's owned DoFs) with the multipliers and active
+   * set the contact layer holds, and, if `tangent` is not null, assembles the tangent into it (from
+   * its constant part, keep_constant_tangent(), or from zero) and records its scales
+   * (TangentScales). The residual is then available from force_rows() and constraint_rows().
+   * Without a tangent the figures use the scales of the last assembly (tangent_scales()).
    *
    * Throws the SolverFailure of ElasticBodies::assemble_internal_force() (an inverted element) as
    * it is, after flushing the entries assembled so far (collectively); the residual, internal
    * force and figures are then not meaningful.
    */
   Figures evaluate(const Step& step,
-                   const Vector<double>& increment,
+                   const DistributedVector& increment,
                    const Vector<double>& displacement,
                    SaddlePointSystem<dim>* tangent);
 
-  /** The force rows of the last evaluation's residual (n_dofs entries, zero at fixed DoFs). */
-  const Vector<double>& force_rows() const { return force_residual; }
+  /**
+   * The force rows of the last evaluation's residual (n_dofs entries, zero at fixed DoFs; this
+   * rank's owned DoFs).
+   */
+  const DistributedVector& force_rows() const { return force_residual; }
 
   /** The constraint rows of the last evaluation's residual (one per multiplier). */
   const Vector<double>& constraint_rows() const { return constraint_residual; }
 
-  /** Q(u) at the displacement of the last evaluation [force], n_dofs entries. */
-  const Vector<double>& internal_force() const { return internal_force_values; }
+  /** Q(u) at the displacement of the last evaluation [force], this rank's owned DoFs. */
+  const DistributedVector& internal_force() const { return internal_force_values; }
 
   /** Strain energy at the displacement of the last evaluation [energy]. */
   double strain_energy() const { return strain_energy_value; }
@@ -138,7 +141,7 @@ private:
    * `tangent` is not null, the tangent into it; see evaluate().
    */
   void assemble(const Step& step,
-                const Vector<double>& increment,
+                const DistributedVector& increment,
                 const Vector<double>& displacement,
                 SaddlePointSystem<dim>* tangent);
 
@@ -149,11 +152,9 @@ private:
   const ContactConstraints<dim>& contact;
   const Vector<double>& lumped_mass;
   std::vector<bool> is_fixed;
-  Vector<double> internal_force_values;
-  Vector<double> inertia_force;
-  Vector<double> contact_force;
+  /** Q(u), c M (u - u~), G^T lambda and the force rows: this rank's owned DoFs. */
+  DistributedVector internal_force_values, inertia_force, contact_force, force_residual;
   Vector<double> constraint_residual;
-  Vector<double> force_residual;
   TangentScales scales;
   double strain_energy_value = 0.;
 };

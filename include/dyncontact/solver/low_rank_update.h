@@ -37,9 +37,10 @@ public:
   /**
    * `columns_u`: the k columns of U (n entries each, distributed); `columns_v`: the k sparse
    * columns of V (rows < n; the same on every rank; k >= 1, the same k).
-   * Calls `solve_a0` once, with the k columns of U. Collective. Throws SolverFailure if the capacitance matrix
-   * is singular or so ill-conditioned (reciprocal condition number below 1e-12) that the formula
-   * would lose the solution's digits; the caller then factorizes A0 + U V^T itself.
+   * Calls `solve_a0` once, with the k columns of U. Collective. Throws SolverFailure if the
+   * capacitance matrix is singular or so ill-conditioned (reciprocal condition number below 1e-12)
+   * that the formula would lose the solution's digits; the caller then factorizes A0 + U V^T
+   * itself.
    */
   LowRankUpdate(const std::vector<DistributedVector>& columns_u,
                 std::vector<SparseColumn> columns_v,

@@ -125,18 +125,20 @@ public:
 
   /**
    * The vector over all unknowns, distributed like the rows (this rank's), of
-   * `displacement_rows` (n_dofs entries, whole) followed by `multiplier_rows` (n_multipliers
-   * entries, whole).
+   * `displacement_rows` (n_dofs entries, this rank's owned DoFs) followed by `multiplier_rows`
+   * (n_multipliers entries, the same on every rank).
    */
-  DistributedVector stack(const Vector<double>& displacement_rows,
+  DistributedVector stack(const DistributedVector& displacement_rows,
                           const Vector<double>& multiplier_rows) const;
 
   /**
-   * The parts of `stacked` (over all unknowns, distributed like the rows) that stack() joins,
-   * each whole on every rank (gathered: collective).
+   * The parts of `stacked` (over all unknowns, distributed like the rows) that stack() joins:
+   * the displacement rows into `displacement_part` (laid out over this rank's owned DoFs by the
+   * caller), the multiplier rows into `multiplier_part` (resized; sent to every rank from the
+   * last: collective).
    */
   void split(const DistributedVector& stacked,
-             Vector<double>& displacement_part,
+             DistributedVector& displacement_part,
              Vector<double>& multiplier_part) const;
 
   /**
