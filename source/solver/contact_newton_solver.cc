@@ -29,12 +29,13 @@ struct ContactNewtonSolver<dim>::Iteration
   };
 
   const typename DynamicResidual<dim>::Step step;
-  DistributedVector increment;            ///< u - u~, this rank's owned DoFs
-  Vector<double> last_configuration = {}; ///< u_n (whole), for alpha_f > 0 only
-  Vector<double> displacement       = {}; ///< u~ + increment, whole
-  bool active_set_changed           = false;
-  bool restarted                    = false;
-  unsigned int linear_solves        = 0;
+  DistributedVector increment;              ///< u - u~, this rank's owned DoFs
+  DistributedVector restart_increment = {}; ///< u_n - u~, where Newton restarts (owned DoFs)
+  Vector<double> last_configuration   = {}; ///< u_n (whole), for alpha_f > 0 only
+  Vector<double> displacement         = {}; ///< u~ + increment, whole
+  bool active_set_changed             = false;
+  bool restarted                      = false;
+  unsigned int linear_solves          = 0;
   /** Backtracking line search: the state before the last update, the update and its fraction. */
   std::optional<StateBeforeUpdate> before_update = {};
   /** Modified Newton: the active set at which this step's tangent was assembled (empty: none). */
@@ -78,15 +79,22 @@ typename ContactNewtonSolver<dim>::Report
 ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
                                 const double inertia_factor,
                                 const Vector<double>& external_force,
-                                const Vector<double>& restart_increment,
+                                const Vector<double>& last_displacement,
                                 Vector<double>& increment)
 {
   Iteration iteration{{predictor, inertia_factor, external_force}, DistributedVector(owned_dofs)};
   copy_owned_entries(increment, iteration.increment);
-  if (alpha_f != 0.)
+  iteration.restart_increment.reinit(owned_dofs);
+  for (unsigned int i = 0; i < iteration.restart_increment.locally_owned_size(); ++i)
   {
-    iteration.last_configuration = predictor;
-    iteration.last_configuration += restart_increment;
+    const auto dof                               = owned_dofs->local_to_global(i);
+    iteration.restart_increment.local_element(i) = last_displacement[dof] - predictor[dof];
+  }
+  if (alpha_f != 0.) // u_n as predictor + (u_n - u~), the configuration Newton restarts from
+  {
+    iteration.last_configuration = last_displacement;
+    iteration.last_configuration -= predictor;
+    iteration.last_configuration += predictor;
   }
   // A pair enters when the unconstrained predicted gap is negative.
   enter(iteration);
@@ -101,7 +109,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     if (!iteration.before_update && !iteration.restarted && contact.n_active() > 0)
     {
       with_tangent = true;
-      restart(iteration, restart_increment);
+      restart(iteration);
       continue;
     }
     TimerOutput::Scope assembly_scope(timer, "assembly");
@@ -118,7 +126,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     // converged configuration instead. See the class documentation for why not from the guess.
     if (!iteration.before_update && !iteration.restarted)
     {
-      restart(iteration, restart_increment);
+      restart(iteration);
       continue;
     }
     if (must_backtrack(iteration, evaluation))
@@ -146,11 +154,10 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
 }
 
 template <int dim>
-void ContactNewtonSolver<dim>::restart(Iteration& iteration,
-                                       const Vector<double>& restart_increment)
+void ContactNewtonSolver<dim>::restart(Iteration& iteration)
 {
   iteration.restarted = true;
-  copy_owned_entries(restart_increment, iteration.increment);
+  iteration.increment = iteration.restart_increment;
   enter(iteration);
 }
 
@@ -181,8 +188,8 @@ void ContactNewtonSolver<dim>::enter(Iteration& iteration)
 template <int dim>
 void ContactNewtonSolver<dim>::set_displacement(Iteration& iteration) const
 {
-  iteration.displacement = iteration.step.predictor;
-  iteration.displacement += gather_whole(iteration.increment);
+  iteration.displacement = gather_whole(iteration.increment);
+  iteration.displacement += iteration.step.predictor; // u~ + increment: addition commutes
 }
 
 template <int dim>

@@ -62,25 +62,27 @@ ImplicitStepper<dim>::solve(const StepState& before, const double time, Vector<d
   border.scatter(border_acceleration, start_acceleration);
   border.scatter(border_predictor, predictor);
   contact.set_reference_gaps(dynamics.reference_gaps(contact, start, border_predictor));
-  Vector<double> last_configuration = before.displacement; // as an increment over the predictor
-  last_configuration -= predictor;
   current.external_force = loads.force(time);
   // A dissipative member balances at t_{n+1-alpha_f}: the solve takes W_eff (GeneralizedAlpha).
-  Vector<double> step_force = current.external_force;
+  Vector<double> effective_force;
   if (integrator.family() != IntegratorFamily::newmark)
   {
     load_at_balance = loads.force(integrator.load_time(time));
     Vector<double> old_inertia_force(mass);
     old_inertia_force.scale(start_acceleration);
     integrator.effective_force(
-        load_at_balance, old_inertia_force, before.internal_force, step_force);
+        load_at_balance, old_inertia_force, before.internal_force, effective_force);
     old_balance_acceleration = start_acceleration;
     old_balance_net_force    = before.internal_force;
     old_balance_net_force *= integrator.alpha_f();
     old_balance_net_force -= load_at_balance;
   }
-  const auto report = solver.solve(
-      predictor, integrator.inertia_factor(), step_force, last_configuration, increment);
+  const auto report =
+      solver.solve(predictor,
+                   integrator.inertia_factor(),
+                   effective_force.size() > 0 ? effective_force : current.external_force,
+                   before.displacement,
+                   increment);
   current.internal_force = solver.internal_force();
   return report.linear_solves;
 }

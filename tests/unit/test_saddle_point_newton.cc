@@ -144,11 +144,10 @@ struct TwoSprings
                             unsigned int& linear_solves)
   {
     const Vector<double> u_tilde = nodal(predictor);
-    Vector<double> restart       = nodal(last);
-    restart -= u_tilde;
-    Vector<double> increment = nodal(guess);
+    Vector<double> increment     = nodal(guess);
     increment -= u_tilde;
-    linear_solves = solver->solve(u_tilde, 1., nodal(external), restart, increment).linear_solves;
+    linear_solves =
+        solver->solve(u_tilde, 1., nodal(external), nodal(last), increment).linear_solves;
     increment += u_tilde;
     return increment;
   }

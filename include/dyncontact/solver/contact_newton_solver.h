@@ -97,15 +97,16 @@ public:
    * Solves the step, with external forces W at t_{n+1}, for the increment u_{n+1} - u~ over the
    * predictor u~ (initial guess: the value `increment` holds on entry, usually zero); on exit
    * u_{n+1} = predictor + increment. The contact multipliers and active set are updated in place.
-   * Unless the initial guess is already the answer, Newton iterates from `restart_increment`
-   * instead (u_n - u~, i.e. from the last converged configuration; see the class documentation).
+   * Unless the initial guess is already the answer, Newton iterates from the last converged
+   * configuration `last_displacement` u_n instead (the increment u_n - u~; see the class
+   * documentation). The vectors are whole (n_dofs entries).
    * Throws SolverFailure if Newton does not converge within the iteration limit or the linear
    * solver fails.
    */
   Report solve(const Vector<double>& predictor,
                double inertia_factor,
                const Vector<double>& external_force,
-               const Vector<double>& restart_increment,
+               const Vector<double>& last_displacement,
                Vector<double>& increment);
 
   /**
@@ -165,8 +166,8 @@ private:
   /** Moves the pairs' master points to the iterate's (1 - alpha_f) u + alpha_f u_n. */
   void move_master_points(const Iteration& iteration);
 
-  /** Newton starts again from `restart_increment` (the last converged configuration). */
-  void restart(Iteration& iteration, const Vector<double>& restart_increment);
+  /** Newton starts again from the last converged configuration u_n. */
+  void restart(Iteration& iteration);
 
   /** The residual (with the tangent if `with_tangent`) at the iterate; catches SolverFailure. */
   Evaluation evaluate(const Iteration& iteration, bool with_tangent);
