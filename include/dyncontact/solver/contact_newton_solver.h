@@ -52,8 +52,10 @@ namespace dyncontact
  * be evaluated (an inverted element) or grows while the active set stays the same, the residual
  * measured as the force residual together with the active gaps times the largest tangent diagonal.
  *
- * Vectors passed in and out are whole on every rank (the parallel layout of the matrix and the
- * direct solver are SaddlePointSystem's).
+ * Vectors passed in and out are whole on every rank. Inside, the increments, the Newton update
+ * and the residual's force vectors hold each rank's owned DoFs (DistributedVector); the
+ * displacement of an iterate is gathered whole once per update for the contact layer (the parallel
+ * layout of the matrix and the direct solver are SaddlePointSystem's).
  *
  * The class is the Newton driver of three units: a SaddlePointSystem (the matrix, its fixed
  * sparsity pattern and the direct solve), a DynamicResidual (the residual, the tangent and the
