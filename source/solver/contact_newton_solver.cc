@@ -245,7 +245,8 @@ bool ContactNewtonSolver<dim>::has_converged(
   const bool residual_small =
       figures.force_residual <= tolerance ||
       (figures.force_residual <= tolerance + figures.round_off_floor && !converging);
-  return !iteration.active_set_changed && residual_small &&
+  // A residual that is not finite never passes (its tolerance may be infinite too).
+  return !iteration.active_set_changed && std::isfinite(figures.force_residual) && residual_small &&
          figures.constraint_violation <= gap_tolerance &&
          (iteration.linear_solves > 0 || contact.n_active() == 0);
 }

@@ -135,6 +135,10 @@ DirectSolver::solve(const std::vector<DistributedVector>& right_hand_sides)
     }
     // Amesos reads and writes Epetra views of the vectors' own rows (the matrix's row map).
     const Epetra_Map& rows = problem->GetMatrix()->RowMatrixRowMap();
+    AssertThrow(right_hand_side.locally_owned_size() ==
+                    static_cast<unsigned int>(rows.NumMyElements()),
+                ExcMessage("DirectSolver::solve: the right-hand side must be distributed like "
+                           "the matrix's rows"));
     Epetra_Vector rhs(View, rows, const_cast<double*>(right_hand_side.begin()));
     Epetra_Vector lhs(View, rows, solution.begin());
     problem->SetRHS(&rhs);

@@ -232,8 +232,12 @@ MumpsSolver::solve(const std::vector<DistributedVector>& right_hand_sides)
   std::vector<double> local_rhs(std::max<std::size_t>(n_rows, 1) * k);
   for (std::size_t j = 0; j < k; ++j)
   {
-    AssertDimension(right_hand_sides[j].size(), static_cast<std::size_t>(instance->n));
-    AssertDimension(right_hand_sides[j].locally_owned_size(), n_rows);
+    AssertThrow(right_hand_sides[j].size() == static_cast<std::size_t>(instance->n) &&
+                    right_hand_sides[j].locally_owned_size() == n_rows &&
+                    right_hand_sides[j].get_partitioner()->local_range() ==
+                        right_hand_sides.front().get_partitioner()->local_range(),
+                ExcMessage("MumpsSolver::solve: each right-hand side must be distributed like "
+                           "the matrix's rows"));
     std::copy_n(right_hand_sides[j].begin(), n_rows, &local_rhs[j * n_rows]);
     solutions[j].reinit(right_hand_sides[j]);
   }

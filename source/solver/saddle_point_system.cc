@@ -104,9 +104,11 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
   if (multiplier_rows_owner)
     locally_owned_rows.add_range(n_dofs, n_total);
   locally_owned_rows.compress();
-  AssertThrow(locally_owned_rows.is_contiguous(),
-              ExcMessage("SaddlePointSystem needs each rank's DoFs to be one range, the last "
-                         "rank's the highest (as the DoFHandler numbers them by subdomain)"));
+  // Checked on all ranks at once, so that no rank goes on alone into the collective set-up.
+  AssertThrow(
+      Utilities::MPI::min(static_cast<int>(locally_owned_rows.is_contiguous()), communicator) == 1,
+      ExcMessage("SaddlePointSystem needs each rank's DoFs to be one range, the last "
+                 "rank's the highest (as the DoFHandler numbers them by subdomain)"));
   row_partitioner = std::make_shared<Utilities::MPI::Partitioner>(locally_owned_rows, communicator);
   system_matrix.reinit(
       locally_owned_rows,
