@@ -17,7 +17,7 @@ namespace dyncontact
 using DistributedVector = LinearAlgebra::distributed::Vector<double>;
 
 /**
- * The whole of `vector` (all size() entries) on every rank: each rank's owned entries gathered
+ * The whole of `vector` (all size() entries) on every rank: each rank's owned range gathered
  * to all (MPI_Allgatherv). Collective. For the parts of the code that still work on whole
  * vectors.
  */
