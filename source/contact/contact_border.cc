@@ -1,4 +1,5 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/contact/contact_border.h>
 
 #include <algorithm>
@@ -51,6 +52,18 @@ Vector<double> ContactBorder<dim>::gather(const Vector<double>& volume) const
 }
 
 template <int dim>
+Vector<double> ContactBorder<dim>::gather(const DistributedVector& volume) const
+{
+  // Each entry from its owner, zero elsewhere; the sum over the ranks adds only zeros to it.
+  Vector<double> border(n_dofs());
+  for (unsigned int i = 0; i < border.size(); ++i)
+    if (volume.in_local_range(volume_dof(i)))
+      border[i] = volume(volume_dof(i));
+  sum_over_ranks(border, volume.get_mpi_communicator());
+  return border;
+}
+
+template <int dim>
 std::vector<bool> ContactBorder<dim>::gather(const std::vector<bool>& volume) const
 {
   std::vector<bool> border(n_dofs());
@@ -77,11 +90,12 @@ void ContactBorder<dim>::scatter_add(const Vector<double>& border, DistributedVe
 }
 
 template <int dim>
-void ContactBorder<dim>::scatter(const Vector<double>& border, Vector<double>& volume) const
+void ContactBorder<dim>::scatter(const Vector<double>& border, DistributedVector& volume) const
 {
   AssertDimension(border.size(), n_dofs());
   for (unsigned int i = 0; i < border.size(); ++i)
-    volume[volume_dof(i)] = border[i];
+    if (volume.in_local_range(volume_dof(i)))
+      volume(volume_dof(i)) = border[i];
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(ContactBorder)

@@ -1,8 +1,24 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/postprocess/body_impulses.h>
 
 namespace dyncontact
 {
+namespace
+{
+/**
+ * Where this rank's partial sums of running sums `sums` start: from `sums` on the first rank of
+ * `communicator`, from zero on the others. Each rank then adds its owned DoFs' terms, and the
+ * partial sums added over the ranks continue `sums`; on one rank the additions are those of one
+ * loop over all DoFs, in the same order.
+ */
+std::vector<double> partial_sums_start(const std::vector<double>& sums, const MPI_Comm communicator)
+{
+  return Utilities::MPI::this_mpi_process(communicator) == 0 ? sums
+                                                             : std::vector<double>(sums.size(), 0.);
+}
+} // namespace
+
 template <int dim>
 BodyImpulses<dim>::BodyImpulses(const GeneralizedAlpha& integrator,
                                 const Vector<double>& lumped_mass,
@@ -71,19 +87,21 @@ typename BodyImpulses<dim>::Forces BodyImpulses<dim>::forces(const StepState& st
   const std::vector<bool> in_active_pair = active_pair_dofs();
   const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
   Forces forces{std::vector<double>(n_bodies, 0.), std::vector<double>(n_bodies, 0.)};
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+  for (const types::global_dof_index i : state.external_force.locally_owned_elements())
   {
-    double force = state.external_force[i];
+    double force = state.external_force(i);
     if (every_dof || in_active_pair[i] || is_fixed_dof[i])
     {
       const double balance =
-          mass[i] * state.acceleration[i] + state.internal_force[i] - state.external_force[i];
+          mass[i] * state.acceleration(i) + state.internal_force(i) - state.external_force(i);
       force += balance;
       if (!is_fixed_dof[i])
         forces.contact[dof_body[i]] += dof_direction[i] * balance;
     }
     forces.total[dof_body[i]] += dof_direction[i] * force;
   }
+  sum_over_ranks(forces.total, state.external_force.get_mpi_communicator());
+  sum_over_ranks(forces.contact, state.external_force.get_mpi_communicator());
   return forces;
 }
 
@@ -91,7 +109,7 @@ template <int dim>
 void BodyImpulses<dim>::accumulate(const StepState& start,
                                    const Ledger& before,
                                    const StepState& state,
-                                   const Vector<double>& step_load)
+                                   const DistributedVector& step_load)
 {
   const double dt     = integrator.time_step();
   const double gamma  = integrator.gamma();
@@ -103,33 +121,43 @@ void BodyImpulses<dim>::accumulate(const StepState& start,
     impulses[b] += dt * ((1. - gamma) * before.forces.total[b] + gamma * forces.total[b]);
     contact_part[b] += dt * ((1. - gamma) * before.forces.contact[b] + gamma * forces.contact[b]);
   }
+  accumulated.forces = forces;
   // The modified scheme's velocity correction is an impulse of its own (the paper's lambda_v):
   // the part of M (v_{n+1} - v_n) that the Newmark update of the accelerations does not explain.
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
-    if (is_contact_dof[i])
-    {
-      const double correction =
-          dof_direction[i] * mass[i] *
-          (state.velocity[i] - start.velocity[i] -
-           dt * ((1. - gamma) * start.acceleration[i] + gamma * state.acceleration[i]));
-      impulses[dof_body[i]] += correction;
-      contact_part[dof_body[i]] += correction;
-    }
-  accumulated.forces = forces;
   // The work of the external forces as the integrator applies them (doc/method.md, "The energy
   // guard's external work"): Newmark, ((1 - gamma) W_n + gamma W_{n+1}) . (u_{n+1} - u_n), the
   // work term of its energy identity (the trapezoid only for gamma = 1/2); a dissipative member,
   // whose balance takes the load at t_{n+1-alpha_f}, W(t_{n+1-alpha_f}) . (u_{n+1} - u_n).
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
-    accumulated.external_work += (step_load.size() > 0 ? step_load[i]
-                                                       : (1. - gamma) * start.external_force[i] +
-                                                             gamma * state.external_force[i]) *
-                                 (state.displacement[i] - start.displacement[i]);
+  const MPI_Comm communicator      = state.displacement.get_mpi_communicator();
+  std::vector<double> impulse_sums = partial_sums_start(impulses, communicator),
+                      contact_sums = partial_sums_start(contact_part, communicator),
+                      work_sum     = partial_sums_start({accumulated.external_work}, communicator);
+  for (const types::global_dof_index i : state.displacement.locally_owned_elements())
+  {
+    if (is_contact_dof[i])
+    {
+      const double correction =
+          dof_direction[i] * mass[i] *
+          (state.velocity(i) - start.velocity(i) -
+           dt * ((1. - gamma) * start.acceleration(i) + gamma * state.acceleration(i)));
+      impulse_sums[dof_body[i]] += correction;
+      contact_sums[dof_body[i]] += correction;
+    }
+    work_sum[0] += (step_load.size() > 0 ? step_load(i)
+                                         : (1. - gamma) * start.external_force(i) +
+                                               gamma * state.external_force(i)) *
+                   (state.displacement(i) - start.displacement(i));
+  }
+  for (std::vector<double>* sums : {&impulse_sums, &contact_sums, &work_sum})
+    sum_over_ranks(*sums, communicator);
+  impulses                  = impulse_sums;
+  contact_part              = contact_sums;
+  accumulated.external_work = work_sum[0];
 }
 
 template <int dim>
-void BodyImpulses<dim>::balance_momenta(Vector<double>& increment,
-                                        const Vector<double>& residual,
+void BodyImpulses<dim>::balance_momenta(DistributedVector& increment,
+                                        const DistributedVector& residual,
                                         const double c) const
 {
   // The residual r = c M (u - u~) + Q(u) - W - G^T lambda left within the Newton tolerance, summed
@@ -142,23 +170,26 @@ void BodyImpulses<dim>::balance_momenta(Vector<double>& increment,
   // gap tolerance.
   const std::vector<bool> in_active_pair = active_pair_dofs();
   std::vector<double> residual_sum(n_bodies, 0.), inertia_sum(n_bodies, 0.);
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+  for (const types::global_dof_index i : increment.locally_owned_elements())
     if (!is_fixed_dof[i] && dof_direction[i] != 0. && !in_active_pair[i])
     {
-      residual_sum[dof_body[i]] += dof_direction[i] * residual[i];
+      residual_sum[dof_body[i]] += dof_direction[i] * residual(i);
       inertia_sum[dof_body[i]] += c * mass[i] * dof_direction[i] * dof_direction[i];
     }
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+  sum_over_ranks(residual_sum, increment.get_mpi_communicator());
+  sum_over_ranks(inertia_sum, increment.get_mpi_communicator());
+  for (const types::global_dof_index i : increment.locally_owned_elements())
     if (!is_fixed_dof[i] && dof_direction[i] != 0. && inertia_sum[dof_body[i]] > 0.)
-      increment[i] -= residual_sum[dof_body[i]] / inertia_sum[dof_body[i]] * dof_direction[i];
+      increment(i) -= residual_sum[dof_body[i]] / inertia_sum[dof_body[i]] * dof_direction[i];
 }
 
 template <int dim>
-std::vector<double> BodyImpulses<dim>::momenta(const Vector<double>& velocity) const
+std::vector<double> BodyImpulses<dim>::momenta(const DistributedVector& velocity) const
 {
   std::vector<double> momenta(n_bodies, 0.);
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
-    momenta[dof_body[i]] += mass[i] * dof_direction[i] * velocity[i];
+  for (const types::global_dof_index i : velocity.locally_owned_elements())
+    momenta[dof_body[i]] += mass[i] * dof_direction[i] * velocity(i);
+  sum_over_ranks(momenta, velocity.get_mpi_communicator());
   return momenta;
 }
 

@@ -14,8 +14,8 @@ struct BorderBalance
 {
   BorderBalance(const ContactBorder<dim>& border,
                 const Vector<double>& lumped_mass,
-                const Vector<double>& acceleration,
-                const Vector<double>& net_internal_force)
+                const DistributedVector& acceleration,
+                const DistributedVector& net_internal_force)
       : mass(border.gather(lumped_mass)), acceleration(border.gather(acceleration)),
         net_force(border.gather(net_internal_force))
   {
@@ -44,9 +44,10 @@ ContactFields<dim>::ContactFields(const ContactConstraints<dim>& contact) : cont
 }
 
 template <int dim>
-double ContactFields<dim>::recovered_contact_force(const Vector<double>& lumped_mass,
-                                                   const Vector<double>& acceleration,
-                                                   const Vector<double>& net_internal_force) const
+double
+ContactFields<dim>::recovered_contact_force(const Vector<double>& lumped_mass,
+                                            const DistributedVector& acceleration,
+                                            const DistributedVector& net_internal_force) const
 {
   const auto& pairs = contact.candidate_pairs();
   const BorderBalance<dim> balance(contact.border(), lumped_mass, acceleration, net_internal_force);
@@ -60,8 +61,8 @@ double ContactFields<dim>::recovered_contact_force(const Vector<double>& lumped_
 template <int dim>
 typename ContactFields<dim>::SideForces
 ContactFields<dim>::recovered_side_forces(const Vector<double>& lumped_mass,
-                                          const Vector<double>& acceleration,
-                                          const Vector<double>& net_internal_force,
+                                          const DistributedVector& acceleration,
+                                          const DistributedVector& net_internal_force,
                                           const Tensor<1, dim>& direction) const
 {
   // Every node of an active pair between bodies counts once, on its side (a slave node on A, a
@@ -94,8 +95,8 @@ double ContactFields<dim>::total_pair_force() const
 }
 
 template <int dim>
-double ContactFields<dim>::event_work(const Vector<double>& old_displacement,
-                                      const Vector<double>& new_displacement,
+double ContactFields<dim>::event_work(const DistributedVector& old_displacement,
+                                      const DistributedVector& new_displacement,
                                       const typename ContactConstraints<dim>::State& old) const
 {
   const Vector<double> old_border = contact.border().gather(old_displacement),
@@ -112,7 +113,7 @@ double ContactFields<dim>::event_work(const Vector<double>& old_displacement,
 }
 
 template <int dim>
-double ContactFields<dim>::max_penetration(const Vector<double>& displacement) const
+double ContactFields<dim>::max_penetration(const DistributedVector& displacement) const
 {
   const Vector<double> border_displacement = contact.border().gather(displacement);
   double penetration                       = 0.;
@@ -122,7 +123,7 @@ double ContactFields<dim>::max_penetration(const Vector<double>& displacement) c
 }
 
 template <int dim>
-double ContactFields<dim>::max_active_normal_jump(const Vector<double>& field) const
+double ContactFields<dim>::max_active_normal_jump(const DistributedVector& field) const
 {
   const Vector<double> border_field = contact.border().gather(field);
   double jump                       = 0.;
@@ -133,7 +134,7 @@ double ContactFields<dim>::max_active_normal_jump(const Vector<double>& field) c
 }
 
 template <int dim>
-double ContactFields<dim>::contact_radius(const Vector<double>& displacement) const
+double ContactFields<dim>::contact_radius(const DistributedVector& displacement) const
 {
   const Vector<double> border_displacement = contact.border().gather(displacement);
   double radius                            = 0.;
@@ -168,7 +169,7 @@ Vector<double> ContactFields<dim>::traction(const std::vector<double>& pressures
 template <int dim>
 std::vector<typename FieldOutput<dim>::PressureSample>
 ContactFields<dim>::pressure_samples(const std::vector<double>& pressures,
-                                     const Vector<double>& displacement) const
+                                     const DistributedVector& displacement) const
 {
   const ContactBorder<dim>& border         = contact.border();
   const Vector<double> border_displacement = border.gather(displacement);

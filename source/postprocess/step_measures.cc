@@ -24,24 +24,29 @@ StepMeasures<dim>::StepMeasures(const GeneralizedAlpha& integrator,
 template <int dim>
 Measures StepMeasures<dim>::measure(const bool after_a_step) const
 {
-  const StepState& state        = stepper.state();
-  const Vector<double>&velocity = state.velocity, &acceleration = state.acceleration;
+  const StepState& state            = stepper.state();
+  const DistributedVector &velocity = state.velocity, &acceleration = state.acceleration;
+  const MPI_Comm communicator = velocity.get_mpi_communicator();
   Measures measures{};
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+  for (const types::global_dof_index i : velocity.locally_owned_elements())
   {
-    measures.kinetic_energy += 0.5 * mass[i] * velocity[i] * velocity[i];
-    measures.acceleration_energy += 0.5 * mass[i] * acceleration[i] * acceleration[i];
+    measures.kinetic_energy += 0.5 * mass[i] * velocity(i) * velocity(i);
+    measures.acceleration_energy += 0.5 * mass[i] * acceleration(i) * acceleration(i);
+    measures.momentum_magnitude += mass[i] * std::abs(velocity(i));
   }
+  measures.kinetic_energy      = Utilities::MPI::sum(measures.kinetic_energy, communicator);
+  measures.acceleration_energy = Utilities::MPI::sum(measures.acceleration_energy, communicator);
+  measures.momentum_magnitude  = Utilities::MPI::sum(measures.momentum_magnitude, communicator);
   // After a step the solver's last evaluation was at this displacement: reuse its pass.
-  measures.strain_energy =
-      after_a_step ? solver.strain_energy() : bodies.strain_energy(state.displacement);
+  measures.strain_energy      = after_a_step ? solver.strain_energy()
+                                             : bodies.strain_energy(gather_whole(state.displacement));
   measures.algorithmic_energy = integrator.algorithmic_energy(
       measures.kinetic_energy, measures.strain_energy, measures.acceleration_energy);
   if (after_a_step)
   {
     // The balance the step solved: at t_{n+1} for Newmark, at the intermediate times of a
     // dissipative member (M a_{n+1-alpha_m} + Q_{n+1-alpha_f} - W(t_{n+1-alpha_f})).
-    Vector<double> balance_acceleration, net_force;
+    DistributedVector balance_acceleration, net_force;
     stepper.solved_balance(balance_acceleration, net_force);
     const double force_factor = dynamics.contact_force_factor(integrator.rate_map());
     measures.contact_force =
@@ -53,8 +58,6 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
     measures.acceleration_jump = fields.max_active_normal_jump(acceleration);
   }
   measures.momenta = body_impulses.momenta(velocity);
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
-    measures.momentum_magnitude += mass[i] * std::abs(velocity[i]);
   return measures;
 }
 

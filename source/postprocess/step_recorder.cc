@@ -1,4 +1,5 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/postprocess/step_recorder.h>
 
 #include <deal.II/base/mpi.h>
@@ -120,28 +121,41 @@ void StepRecorder<dim>::record(const Step& step,
                              step.size,
                              static_cast<double>(step.cuts)};
   // Contact pressures (surface contact only): one solve per step, skipped without contact.
-  const std::vector<double> pressures = surface_contact && contact.n_active() > 0
-                                            ? contact.contact_pressures(state.displacement)
-                                            : std::vector<double>(contact.n_pairs(), 0.);
+  const std::vector<double> pressures =
+      surface_contact && contact.n_active() > 0
+          ? contact.contact_pressures(gather_whole(state.displacement))
+          : std::vector<double>(contact.n_pairs(), 0.);
   if (dim > 1)
   {
     row.push_back(fields.contact_radius(state.displacement));
     row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
   }
-  const Tensor<1, dim> direction = model.impact_direction();
+  const std::vector<double> tips = monitor_motions(state);
   for (unsigned int b = 0; b < monitors.size(); ++b)
-  {
-    double u_tip = 0., v_tip = 0., a_tip = 0.;
-    for (unsigned int d = 0; d < dim; ++d)
-    {
-      u_tip += direction[d] * state.displacement[monitors[b].dofs[d]];
-      v_tip += direction[d] * state.velocity[monitors[b].dofs[d]];
-      a_tip += direction[d] * state.acceleration[monitors[b].dofs[d]];
-    }
-    row.insert(row.end(), {measures.momenta[b], impulses[b], u_tip, v_tip, a_tip});
-  }
+    row.insert(row.end(),
+               {measures.momenta[b], impulses[b], tips[3 * b], tips[3 * b + 1], tips[3 * b + 2]});
   rows.add_row(row);
   write_fields(rows.n_rows() - 1, step.nominal_step, step.time, state, pressures);
+}
+
+template <int dim>
+std::vector<double> StepRecorder<dim>::monitor_motions(const StepState& state) const
+{
+  // Each monitor DoF's term from the rank that owns it; the sum over the ranks adds zeros.
+  const Tensor<1, dim> direction = model.impact_direction();
+  std::vector<double> motions(3 * monitors.size(), 0.);
+  for (unsigned int b = 0; b < monitors.size(); ++b)
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      const types::global_dof_index dof = monitors[b].dofs[d];
+      if (!state.displacement.in_local_range(dof))
+        continue;
+      motions[3 * b] += direction[d] * state.displacement(dof);
+      motions[3 * b + 1] += direction[d] * state.velocity(dof);
+      motions[3 * b + 2] += direction[d] * state.acceleration(dof);
+    }
+  sum_over_ranks(motions, state.displacement.get_mpi_communicator());
+  return motions;
 }
 
 template <int dim>
@@ -160,28 +174,31 @@ void StepRecorder<dim>::write_fields(const unsigned int frame,
       (on_nominal_grid && ((output.vtu_interval > 0 && step % output.vtu_interval == 0) ||
                            vtu_steps.count(step) > 0)) ||
       (vtu_on && output.vtu_during_contact && contact.n_active() > 0);
-  const bool profile = on_nominal_grid && profile_steps.count(step) > 0 && is_root_rank;
+  const bool profile = on_nominal_grid && profile_steps.count(step) > 0;
+  if (!vtu_frame && !profile)
+    return;
   TimerOutput::Scope scope(timer, "output");
-  const auto samples = surface_contact && (vtu_frame || profile)
-                           ? fields.pressure_samples(pressures, state.displacement)
-                           : std::vector<typename FieldOutput<dim>::PressureSample>();
+  // The fields whole on every rank (collective), for the frame's pieces and the root's profile.
+  const StepState::Whole whole = state.gather();
+  const auto samples = surface_contact ? fields.pressure_samples(pressures, state.displacement)
+                                       : std::vector<typename FieldOutput<dim>::PressureSample>();
   if (vtu_frame)
   {
     const Vector<double> traction =
         surface_contact ? fields.traction(pressures, state.displacement.size()) : Vector<double>();
     field_output->write_fields(frame,
                                time,
-                               state.displacement,
-                               state.velocity,
-                               state.acceleration,
+                               whole.displacement,
+                               whole.velocity,
+                               whole.acceleration,
                                surface_contact ? &traction : nullptr);
     if (surface_contact)
-      field_output->write_contact_surface(frame, time, state.displacement, samples);
+      field_output->write_contact_surface(frame, time, whole.displacement, samples);
   }
-  if (profile)
+  if (profile && is_root_rank)
   {
     field_output->write_profile(
-        time, nodes.nodes(), state.displacement, state.velocity, state.acceleration);
+        time, nodes.nodes(), whole.displacement, whole.velocity, whole.acceleration);
     if (surface_contact)
       field_output->write_contact_pressure(time, samples);
   }

@@ -86,7 +86,7 @@ void Simulation<dim>::restore(const State& state)
 template <int dim>
 unsigned int Simulation<dim>::do_time_step(const State& before)
 {
-  Vector<double> increment;
+  DistributedVector increment;
   const unsigned int linear_solves = problem->stepper->solve(before.step, time, increment);
   problem->impulses->balance_momenta(
       increment, problem->solver->last_residual(), integrator.inertia_factor());
@@ -128,21 +128,19 @@ const std::string& Simulation<dim>::summary_status() const
 template <int dim>
 ProblemFingerprint Simulation<dim>::problem_fingerprint() const
 {
-  ProblemFingerprint fingerprint;
-  fingerprint.n_ranks        = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-  fingerprint.entries        = parameters.problem_entries;
-  fingerprint.discretization = problem->description();
-  return fingerprint;
+  return {Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD),
+          parameters.problem_entries,
+          problem->description()};
 }
 
 template <int dim>
 template <class Archive>
-void Simulation<dim>::serialize_state(Archive& archive)
+void Simulation<dim>::serialize_state(Archive& archive, StepState::Whole& step)
 {
   typename ContactConstraints<dim>::State contact_state = problem->contact->state();
   TangentScales tangent_scales                          = problem->solver->tangent_scales();
   archive& time;
-  archive & problem->stepper->state();
+  archive& step;
   archive& contact_state.active;
   archive& contact_state.multipliers;
   archive & problem->impulses->ledger();
@@ -153,6 +151,7 @@ void Simulation<dim>::serialize_state(Archive& archive)
   archive& tangent_scales;
   if (Archive::is_loading::value)
   {
+    problem->stepper->state().assign(step);
     problem->contact->restore(contact_state);
     problem->solver->set_tangent_scales(tangent_scales);
   }
@@ -161,13 +160,14 @@ void Simulation<dim>::serialize_state(Archive& archive)
 template <int dim>
 void Simulation<dim>::write_checkpoint()
 {
+  StepState::Whole step = problem->stepper->state().gather(); // collective
   if (!is_root_rank)
     return;
   TimerOutput::Scope scope(timer, "output");
   checkpoint_file::write(parameters.output.directory,
                          problem_fingerprint(),
-                         [this](boost::archive::binary_oarchive& archive)
-                         { serialize_state(archive); });
+                         [this, &step](boost::archive::binary_oarchive& archive)
+                         { serialize_state(archive, step); });
   checkpoint_time = time;
 }
 
@@ -189,10 +189,11 @@ void Simulation<dim>::start(const std::string& resume_directory)
     record(initial, 0, 0, 0);
   else
   {
+    StepState::Whole step;
     checkpoint_file::read(resume_directory,
                           problem_fingerprint(),
-                          [this](boost::archive::binary_iarchive& archive)
-                          { serialize_state(archive); });
+                          [this, &step](boost::archive::binary_iarchive& archive)
+                          { serialize_state(archive, step); });
     checkpoint_time = time;
     log << "dyncontact: resumed from " << resume_directory << "/checkpoint.bin at t = " << time
         << "\n";

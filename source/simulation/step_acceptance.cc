@@ -29,9 +29,9 @@ template <int dim>
 std::string
 StepAcceptance<dim>::check(const double time,
                            const Measures& measures,
-                           const Vector<double>& displacement_before,
+                           const DistributedVector& displacement_before,
                            const typename ContactConstraints<dim>::State& contact_before,
-                           const Vector<double>& displacement,
+                           const DistributedVector& displacement,
                            const bool can_cut)
 {
   checked                   = figures(time, measures);
@@ -74,9 +74,9 @@ StepGuards::Figures StepAcceptance<dim>::figures(const double time, const Measur
 
 template <int dim>
 std::string
-StepAcceptance<dim>::event_failure(const Vector<double>& displacement_before,
+StepAcceptance<dim>::event_failure(const DistributedVector& displacement_before,
                                    const typename ContactConstraints<dim>::State& contact_before,
-                                   const Vector<double>& displacement,
+                                   const DistributedVector& displacement,
                                    const double energy) const
 {
   // With massless contact nodes the bodies do not impact: a pair's force rises and falls

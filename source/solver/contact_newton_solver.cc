@@ -76,25 +76,20 @@ ContactNewtonSolver<dim>::ContactNewtonSolver(const DoFHandler<dim>& dof_handler
 
 template <int dim>
 typename ContactNewtonSolver<dim>::Report
-ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
+ContactNewtonSolver<dim>::solve(const DistributedVector& predictor,
                                 const double inertia_factor,
-                                const Vector<double>& external_force,
-                                const Vector<double>& last_displacement,
-                                Vector<double>& increment)
+                                const DistributedVector& external_force,
+                                const DistributedVector& last_displacement,
+                                DistributedVector& increment)
 {
-  Iteration iteration{{predictor, inertia_factor, external_force}, DistributedVector(owned_dofs)};
-  copy_owned_entries(increment, iteration.increment);
-  iteration.restart_increment.reinit(owned_dofs);
-  for (unsigned int i = 0; i < iteration.restart_increment.locally_owned_size(); ++i)
-  {
-    const auto dof                               = owned_dofs->local_to_global(i);
-    iteration.restart_increment.local_element(i) = last_displacement[dof] - predictor[dof];
-  }
+  Iteration iteration{{predictor, inertia_factor, external_force}, increment};
+  iteration.restart_increment = last_displacement;
+  iteration.restart_increment -= predictor;
   if (alpha_f != 0.) // u_n as predictor + (u_n - u~), the configuration Newton restarts from
   {
-    iteration.last_configuration = last_displacement;
-    iteration.last_configuration -= predictor;
-    iteration.last_configuration += predictor;
+    DistributedVector configuration = iteration.restart_increment;
+    configuration += predictor;
+    iteration.last_configuration = gather_whole(configuration);
   }
   // A pair enters when the unconstrained predicted gap is negative.
   enter(iteration);
@@ -117,7 +112,7 @@ ContactNewtonSolver<dim>::solve(const Vector<double>& predictor,
     Evaluation evaluation    = evaluate(iteration, with_tangent && !reuse_tangent);
     if (evaluation.failure.empty() && has_converged(iteration, evaluation.figures))
     {
-      increment = gather_whole(iteration.increment);
+      increment = iteration.increment;
       return {iteration.linear_solves};
     }
     with_tangent = true;
@@ -188,8 +183,9 @@ void ContactNewtonSolver<dim>::enter(Iteration& iteration)
 template <int dim>
 void ContactNewtonSolver<dim>::set_displacement(Iteration& iteration) const
 {
-  iteration.displacement = gather_whole(iteration.increment);
-  iteration.displacement += iteration.step.predictor; // u~ + increment: addition commutes
+  DistributedVector displacement = iteration.increment;
+  displacement += iteration.step.predictor; // u~ + increment: addition commutes
+  iteration.displacement = gather_whole(displacement);
 }
 
 template <int dim>

@@ -65,44 +65,47 @@ double GeneralizedAlpha::inertia_factor() const
   return (1. - alpha_m_value) / (1. - alpha_f_value) * rate_map().da_du();
 }
 
-void GeneralizedAlpha::predict(const Vector<double>& u_n,
-                               const Vector<double>& v_n,
-                               const Vector<double>& a_n,
-                               Vector<double>& predictor) const
+void GeneralizedAlpha::predict(const DistributedVector& u_n,
+                               const DistributedVector& v_n,
+                               const DistributedVector& a_n,
+                               DistributedVector& predictor) const
 {
   const RateMap rates = rate_map();
-  predictor.reinit(u_n.size(), true);
-  for (types::global_dof_index i = 0; i < u_n.size(); ++i)
-    predictor[i] = rates.predicted_displacement(u_n[i], v_n[i], a_n[i]);
+  predictor.reinit(u_n, true);
+  for (unsigned int i = 0; i < u_n.locally_owned_size(); ++i)
+    predictor.local_element(i) = rates.predicted_displacement(
+        u_n.local_element(i), v_n.local_element(i), a_n.local_element(i));
 }
 
-void GeneralizedAlpha::effective_force(const Vector<double>& external_force,
-                                       const Vector<double>& old_inertia_force,
-                                       const Vector<double>& old_internal_force,
-                                       Vector<double>& effective) const
+void GeneralizedAlpha::effective_force(const DistributedVector& external_force,
+                                       const DistributedVector& old_inertia_force,
+                                       const DistributedVector& old_internal_force,
+                                       DistributedVector& effective) const
 {
-  AssertDimension(old_inertia_force.size(), external_force.size());
-  AssertDimension(old_internal_force.size(), external_force.size());
-  effective.reinit(external_force.size(), true);
-  for (types::global_dof_index i = 0; i < external_force.size(); ++i)
-    effective[i] = (external_force[i] - alpha_m_value * old_inertia_force[i] -
-                    alpha_f_value * old_internal_force[i]) /
-                   (1. - alpha_f_value);
+  AssertDimension(old_inertia_force.locally_owned_size(), external_force.locally_owned_size());
+  AssertDimension(old_internal_force.locally_owned_size(), external_force.locally_owned_size());
+  effective.reinit(external_force, true);
+  for (unsigned int i = 0; i < external_force.locally_owned_size(); ++i)
+    effective.local_element(i) =
+        (external_force.local_element(i) - alpha_m_value * old_inertia_force.local_element(i) -
+         alpha_f_value * old_internal_force.local_element(i)) /
+        (1. - alpha_f_value);
 }
 
-void GeneralizedAlpha::update_rates(const Vector<double>& increment,
-                                    const Vector<double>& v_n,
-                                    const Vector<double>& a_n,
-                                    Vector<double>& v_new,
-                                    Vector<double>& a_new) const
+void GeneralizedAlpha::update_rates(const DistributedVector& increment,
+                                    const DistributedVector& v_n,
+                                    const DistributedVector& a_n,
+                                    DistributedVector& v_new,
+                                    DistributedVector& a_new) const
 {
   const RateMap rates = rate_map();
-  a_new.reinit(increment.size(), true);
-  v_new.reinit(increment.size(), true);
-  for (types::global_dof_index i = 0; i < increment.size(); ++i)
+  a_new.reinit(increment, true);
+  v_new.reinit(increment, true);
+  for (unsigned int i = 0; i < increment.locally_owned_size(); ++i)
   {
-    a_new[i] = rates.acceleration(increment[i]);
-    v_new[i] = rates.velocity(v_n[i], a_n[i], a_new[i]);
+    a_new.local_element(i) = rates.acceleration(increment.local_element(i));
+    v_new.local_element(i) =
+        rates.velocity(v_n.local_element(i), a_n.local_element(i), a_new.local_element(i));
   }
 }
 

@@ -22,29 +22,30 @@ template <int dim>
 void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
                                  const ElasticBodies<dim>& bodies)
 {
-  current.reinit(initial_velocity.size());
-  current.velocity = initial_velocity;
+  current.reinit(solver.dof_layout());
+  copy_owned_entries(initial_velocity, current.velocity);
   DistributedVector internal_force;
-  bodies.assemble_internal_force(current.displacement, internal_force, nullptr);
-  current.internal_force = gather_whole(internal_force);
-  current.external_force = loads.force(0.);
-  for (types::global_dof_index i = 0; i < mass.size(); ++i)
+  bodies.assemble_internal_force(gather_whole(current.displacement), internal_force, nullptr);
+  current.internal_force.copy_locally_owned_data_from(internal_force);
+  copy_owned_entries(loads.force(0.), current.external_force);
+  for (const types::global_dof_index i : current.velocity.locally_owned_elements())
   {
-    current.acceleration[i] =
-        mass[i] > 0. ? (current.external_force[i] - current.internal_force[i]) / mass[i] : 0.;
+    current.acceleration(i) =
+        mass[i] > 0. ? (current.external_force(i) - current.internal_force(i)) / mass[i] : 0.;
     if (is_fixed_dof[i])
-      current.velocity[i] = current.acceleration[i] = 0.;
+      current.velocity(i) = current.acceleration(i) = 0.;
   }
 }
 
 template <int dim>
-unsigned int
-ImplicitStepper<dim>::solve(const StepState& before, const double time, Vector<double>& increment)
+unsigned int ImplicitStepper<dim>::solve(const StepState& before,
+                                         const double time,
+                                         DistributedVector& increment)
 {
   // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
   // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
-  contact.update_geometry(before.displacement);
-  increment.reinit(before.displacement.size());
+  contact.update_geometry(gather_whole(before.displacement));
+  increment.reinit(before.displacement);
   integrator.predict(before.displacement, before.velocity, before.acceleration, predictor);
   // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).
   start_acceleration                       = before.acceleration;
@@ -62,14 +63,16 @@ ImplicitStepper<dim>::solve(const StepState& before, const double time, Vector<d
   border.scatter(border_acceleration, start_acceleration);
   border.scatter(border_predictor, predictor);
   contact.set_reference_gaps(dynamics.reference_gaps(contact, start, border_predictor));
-  current.external_force = loads.force(time);
+  copy_owned_entries(loads.force(time), current.external_force);
   // A dissipative member balances at t_{n+1-alpha_f}: the solve takes W_eff (GeneralizedAlpha).
-  Vector<double> effective_force;
+  DistributedVector effective_force;
   if (integrator.family() != IntegratorFamily::newmark)
   {
-    load_at_balance = loads.force(integrator.load_time(time));
-    Vector<double> old_inertia_force(mass);
-    old_inertia_force.scale(start_acceleration);
+    load_at_balance.reinit(before.displacement, true);
+    copy_owned_entries(loads.force(integrator.load_time(time)), load_at_balance);
+    DistributedVector old_inertia_force(start_acceleration);
+    for (const types::global_dof_index i : old_inertia_force.locally_owned_elements())
+      old_inertia_force(i) = mass[i] * start_acceleration(i);
     integrator.effective_force(
         load_at_balance, old_inertia_force, before.internal_force, effective_force);
     old_balance_acceleration = start_acceleration;
@@ -83,12 +86,12 @@ ImplicitStepper<dim>::solve(const StepState& before, const double time, Vector<d
                    effective_force.size() > 0 ? effective_force : current.external_force,
                    before.displacement,
                    increment);
-  current.internal_force = solver.internal_force();
+  current.internal_force.copy_locally_owned_data_from(solver.internal_force());
   return report.linear_solves;
 }
 
 template <int dim>
-void ImplicitStepper<dim>::finish(const StepState& before, const Vector<double>& increment)
+void ImplicitStepper<dim>::finish(const StepState& before, const DistributedVector& increment)
 {
   current.displacement = predictor;
   current.displacement += increment;
@@ -113,8 +116,8 @@ void ImplicitStepper<dim>::finish(const StepState& before, const Vector<double>&
 }
 
 template <int dim>
-void ImplicitStepper<dim>::solved_balance(Vector<double>& acceleration,
-                                          Vector<double>& net_force) const
+void ImplicitStepper<dim>::solved_balance(DistributedVector& acceleration,
+                                          DistributedVector& net_force) const
 {
   acceleration = current.acceleration;
   net_force    = current.internal_force;

@@ -2,10 +2,28 @@
 
 namespace dyncontact
 {
-void StepState::reinit(const types::global_dof_index n_dofs)
+void StepState::reinit(const std::shared_ptr<const Utilities::MPI::Partitioner>& owned_dofs)
 {
-  for (Vector<double>* vector :
+  for (DistributedVector* vector :
        {&displacement, &velocity, &acceleration, &internal_force, &external_force})
-    vector->reinit(n_dofs);
+    vector->reinit(owned_dofs);
+}
+
+StepState::Whole StepState::gather() const
+{
+  return {gather_whole(displacement),
+          gather_whole(velocity),
+          gather_whole(acceleration),
+          gather_whole(internal_force),
+          gather_whole(external_force)};
+}
+
+void StepState::assign(const Whole& whole)
+{
+  copy_owned_entries(whole.displacement, displacement);
+  copy_owned_entries(whole.velocity, velocity);
+  copy_owned_entries(whole.acceleration, acceleration);
+  copy_owned_entries(whole.internal_force, internal_force);
+  copy_owned_entries(whole.external_force, external_force);
 }
 } // namespace dyncontact

@@ -140,10 +140,10 @@ TEST(ContactBorder, ContactForcesScatterToTheVolumeNodesOfThePairs)
   for (unsigned int i = 0; i < 10; ++i)
     EXPECT_NEAR(force[i], expected[i], 1e-15) << "dof " << i;
   // gather() then scatter() gives the volume vector back at the contact nodes, untouched elsewhere.
-  Vector<double> volume(10);
+  DistributedVector volume(10);
   for (unsigned int i = 0; i < 10; ++i)
     volume[i] = i + 0.5;
-  Vector<double> copy(10);
+  DistributedVector copy(10);
   contact.border().scatter(contact.border().gather(volume), copy);
   for (unsigned int i = 0; i < 10; ++i)
     EXPECT_EQ(copy[i], (i == 2 || i == 3 || i == 6 || i == 7) ? 0. : volume[i]) << "dof " << i;
@@ -209,15 +209,15 @@ TEST(ContactFields, EventWorkIsHalfTheForceTimesTheGapTheEventCrosses)
     pairs.push_back(toy_pair(toy_node(k, Point<2>(k, 0.)), {}, up, Point<2>(k, 0.)));
   ContactConstraints<2> contact(pairs, ContactFormulation::lagrange_multiplier);
   // The step's start: pair 0 open at the gap 0.02, pairs 1 and 2 closed with forces 4 and 5.
-  Vector<double> old_u(6), new_u(6);
+  DistributedVector old_u(6), new_u(6);
   old_u[1] = -0.02;
   Vector<double> old_multipliers(3);
   old_multipliers[1] = 4., old_multipliers[2] = 5.;
   const typename ContactConstraints<2>::State old{{false, true, true}, old_multipliers};
   // Its end: pair 0 closed with force 3, pair 1 open at the gap 0.01, pair 2 still closed.
-  new_u[3]                   = -0.01;
-  Vector<double> penetrating = new_u;
-  penetrating[1] = 1e-3, penetrating[5] = 1e-3;
+  new_u[3] = -0.01;
+  Vector<double> penetrating(6);
+  penetrating[3] = -0.01, penetrating[1] = 1e-3, penetrating[5] = 1e-3;
   contact.update_active_set(penetrating, 1e-6, 0.);
   Vector<double> multipliers(3);
   multipliers[0] = 3., multipliers[2] = 5.;

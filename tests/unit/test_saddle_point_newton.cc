@@ -124,9 +124,9 @@ struct TwoSprings
   }
 
   /** The nodal vector with `values` at a and b, zero at the fixed ends. */
-  Vector<double> nodal(const AtEnds& values) const
+  DistributedVector nodal(const AtEnds& values) const
   {
-    Vector<double> vector(dof_handler.n_dofs());
+    DistributedVector vector(solver->dof_layout());
     vector[a] = values.a;
     vector[b] = values.b;
     return vector;
@@ -143,13 +143,13 @@ struct TwoSprings
                             const AtEnds& guess,
                             unsigned int& linear_solves)
   {
-    const Vector<double> u_tilde = nodal(predictor);
-    Vector<double> increment     = nodal(guess);
+    const DistributedVector u_tilde = nodal(predictor);
+    DistributedVector increment     = nodal(guess);
     increment -= u_tilde;
     linear_solves =
         solver->solve(u_tilde, 1., nodal(external), nodal(last), increment).linear_solves;
     increment += u_tilde;
-    return increment;
+    return gather_whole(increment);
   }
 
   /** The same from the initial guess u~ (the increment zero, as a time step starts). */

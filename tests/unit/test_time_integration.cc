@@ -55,7 +55,7 @@ GeneralizedAlpha newmark(const double beta, const double gamma, const double dt)
  */
 OscillatorState step(const GeneralizedAlpha& integrator, const double k, const OscillatorState& old)
 {
-  Vector<double> u(1), v(1), a(1), predictor, zero(1), inertia(1), internal(1), effective;
+  DistributedVector u(1), v(1), a(1), predictor, zero(1), inertia(1), internal(1), effective;
   u[0]        = old.u;
   v[0]        = old.v;
   a[0]        = old.a;
@@ -63,7 +63,7 @@ OscillatorState step(const GeneralizedAlpha& integrator, const double k, const O
   internal[0] = k * old.u;
   integrator.predict(u, v, a, predictor);
   integrator.effective_force(zero, inertia, internal, effective);
-  Vector<double> increment(1), v_new, a_new;
+  DistributedVector increment(1), v_new, a_new;
   increment[0] = (effective[0] - k * predictor[0]) / (integrator.inertia_factor() + k);
   integrator.update_rates(increment, v, a, v_new, a_new);
   return {predictor[0] + increment[0], v_new[0], a_new[0]};
@@ -287,7 +287,7 @@ TEST(TimeIntegration, NewmarkMemberAndRanges)
   const GeneralizedAlpha paper = newmark(0.001, 0.5, 0.0125);
   EXPECT_EQ(paper.inertia_factor(), 1. / (0.001 * 0.0125 * 0.0125));
   EXPECT_EQ(paper.load_time(2.), 2.);
-  Vector<double> external(2), inertia(2), internal(2), effective;
+  DistributedVector external(2), inertia(2), internal(2), effective;
   external[0] = 0.1;
   external[1] = -3.7;
   inertia[0]  = 5.;

@@ -6,6 +6,8 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/lac/vector.h>
 
+#include <vector>
+
 namespace dyncontact
 {
 /**
@@ -18,5 +20,13 @@ inline void sum_over_ranks(Vector<double>& values, const MPI_Comm communicator)
   Utilities::MPI::sum(ArrayView<const double>(values.begin(), values.size()),
                       communicator,
                       ArrayView<double>(values.begin(), values.size()));
+}
+
+/** The same for a std::vector. */
+inline void sum_over_ranks(std::vector<double>& values, const MPI_Comm communicator)
+{
+  Utilities::MPI::sum(ArrayView<const double>(values.data(), values.size()),
+                      communicator,
+                      ArrayView<double>(values.data(), values.size()));
 }
 } // namespace dyncontact

@@ -14,12 +14,13 @@ namespace dyncontact
  * The contact border: every node a contact pair may couple (the contact nodes), numbered
  * 0 .. n_nodes() - 1 in the order of their first DoF in the volume (the DoFHandler's numbering),
  * and the vectors over them. A border vector holds dim entries per contact node, entry
- * dim i + d for component d of node i (the border DoFs); a volume vector is a whole vector over
- * the displacement DoFs. The contact layer (pairs, constraints, rate treatments, contact fields)
- * works on border vectors only: gather() copies the contact nodes' entries of a volume vector
- * (u, v, a, masses, fixed flags) into one, scatter_add() adds a border vector (the contact forces
- * G^T lambda) into a volume vector, scatter() writes one back (corrected rates). The copies are
- * exact, so a computation on border vectors gives the same bits as on the volume.
+ * dim i + d for component d of node i (the border DoFs); a volume vector is a vector over the
+ * displacement DoFs, whole on every rank or distributed (each rank its owned DoFs). The contact
+ * layer (pairs, constraints, rate treatments, contact fields) works on border vectors only:
+ * gather() copies the contact nodes' entries of a volume vector (u, v, a, masses, fixed flags) into
+ * one, scatter_add() adds a border vector (the contact forces G^T lambda) into a volume vector,
+ * scatter() writes one back (corrected rates). The copies are exact, so a computation on border
+ * vectors gives the same bits as on the volume.
  *
  * The border's own nodes (node()) carry the border DoFs in Node::dofs, with the position and body
  * of the volume node (volume_node()) they stand for.
@@ -64,6 +65,12 @@ public:
   /** The contact nodes' entries of the volume vector `volume` (a border vector). */
   Vector<double> gather(const Vector<double>& volume) const;
 
+  /**
+   * The contact nodes' entries of the distributed volume vector `volume` (a border vector, the
+   * same on every rank): each rank contributes the entries it owns. Collective.
+   */
+  Vector<double> gather(const DistributedVector& volume) const;
+
   /** The contact nodes' entries of the per-DoF flags `volume` (one per border DoF). */
   std::vector<bool> gather(const std::vector<bool>& volume) const;
 
@@ -76,8 +83,11 @@ public:
    */
   void scatter_add(const Vector<double>& border, DistributedVector& volume) const;
 
-  /** Writes the border vector `border` into the contact nodes' entries of `volume`. */
-  void scatter(const Vector<double>& border, Vector<double>& volume) const;
+  /**
+   * Writes the border vector `border` (the same on every rank) into the entries of the contact
+   * nodes that this rank owns in the distributed `volume`.
+   */
+  void scatter(const Vector<double>& border, DistributedVector& volume) const;
 
 private:
   std::vector<Node<dim>> volume_nodes; ///< sorted by first DoF

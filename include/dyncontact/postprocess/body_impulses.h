@@ -18,7 +18,9 @@ namespace dyncontact
  * each body's momentum at the current state, their impulses since t = 0 (all forces, and the
  * contact forces alone), the work of the external forces, and the momentum balance of a step's
  * increment. What the momentum guard, history.csv (impulse_<b>) and impact_summary.csv read.
- * Vectors are over the displacement DoFs; forces [force], impulses [force time], work [energy].
+ * Vectors are over the displacement DoFs (the state's: each rank its owned DoFs, the sums over
+ * all ranks: the functions that read them are collective); forces [force], impulses
+ * [force time], work [energy].
  * The integrator, lumped mass, contact and fixed flags are the caller's and must outlive it.
  */
 template <int dim>
@@ -81,19 +83,19 @@ public:
   void accumulate(const StepState& before,
                   const Ledger& before_ledger,
                   const StepState& state,
-                  const Vector<double>& step_load);
+                  const DistributedVector& step_load);
 
   /**
    * Removes from the converged `increment` the momentum error of each body: a rigid translation
    * along the impact direction cancels the body's Newton `residual` summed along it over the DoFs
    * that carry no contact force (the inertia term of the residual is `inertia_factor` M).
    */
-  void balance_momenta(Vector<double>& increment,
-                       const Vector<double>& residual,
+  void balance_momenta(DistributedVector& increment,
+                       const DistributedVector& residual,
                        double inertia_factor) const;
 
   /** Per body, the momentum along the impact direction of `velocity` [mass length/time]. */
-  std::vector<double> momenta(const Vector<double>& velocity) const;
+  std::vector<double> momenta(const DistributedVector& velocity) const;
 
   const Ledger& ledger() const { return accumulated; }
   Ledger& ledger() { return accumulated; }

@@ -34,8 +34,8 @@ public:
    * accelerations carry the interface force.
    */
   double recovered_contact_force(const Vector<double>& lumped_mass,
-                                 const Vector<double>& acceleration,
-                                 const Vector<double>& net_internal_force) const;
+                                 const DistributedVector& acceleration,
+                                 const DistributedVector& net_internal_force) const;
 
   /**
    * The interface force of the active pairs between bodies (wall pairs left out) recovered from
@@ -51,8 +51,8 @@ public:
     double on_b;
   };
   SideForces recovered_side_forces(const Vector<double>& lumped_mass,
-                                   const Vector<double>& acceleration,
-                                   const Vector<double>& net_internal_force,
+                                   const DistributedVector& acceleration,
+                                   const DistributedVector& net_internal_force,
                                    const Tensor<1, dim>& direction) const;
 
   /** Sum of ContactConstraints::pair_force() over the pairs [force]. */
@@ -69,26 +69,26 @@ public:
    * step's energy change is (1/2) sum_k (lambda_k,n + lambda_k,n+1)(g_k,n+1 - g_k,n)
    * (doc/schemes.md, "Mass redistribution with resolved contact events").
    */
-  double event_work(const Vector<double>& old_displacement,
-                    const Vector<double>& new_displacement,
+  double event_work(const DistributedVector& old_displacement,
+                    const DistributedVector& new_displacement,
                     const typename ContactConstraints<dim>::State& old) const;
 
   /** The largest penetration max(0, -g) over all candidate pairs at `displacement` [length]. */
-  double max_penetration(const Vector<double>& displacement) const;
+  double max_penetration(const DistributedVector& displacement) const;
 
   /**
    * The largest |[[f]]| = |n . (f_B - f_A)| over the active pairs of a nodal field (velocity:
    * length/time, acceleration: length/time^2); zero if none is active. The paper's modified
    * Newmark (Taylor & Papadopoulos 1993, eqs. 22-23) makes it zero for velocity and acceleration.
    */
-  double max_active_normal_jump(const Vector<double>& field) const;
+  double max_active_normal_jump(const DistributedVector& field) const;
 
   /**
    * The largest distance of the current position of node A from the axis of the last coordinate
    * (r in axisymmetry, where it is the contact radius) over the active pairs; zero if none is
    * active. Meaningless in 1D, where it is zero.
    */
-  double contact_radius(const Vector<double>& displacement) const;
+  double contact_radius(const DistributedVector& displacement) const;
 
   /**
    * The nodal traction (`n_dofs` entries) -p n on body A and p n on body B of every pair,
@@ -98,7 +98,8 @@ public:
 
   /** Per candidate pair: its slave node, gap, multiplier, `pressures[k]` and active flag. */
   std::vector<typename FieldOutput<dim>::PressureSample>
-  pressure_samples(const std::vector<double>& pressures, const Vector<double>& displacement) const;
+  pressure_samples(const std::vector<double>& pressures,
+                   const DistributedVector& displacement) const;
 
 private:
   const ContactConstraints<dim>& contact;

@@ -67,7 +67,7 @@ public:
 
   /**
    * Appends the row of `state` (its `measures`; `impulses` [force time] per body) to the history,
-   * and writes the VTU frame (numbered by the row) and profiles scheduled at it.
+   * and writes the VTU frame (numbered by the row) and profiles scheduled at it. Collective.
    */
   void record(const Step& step,
               const Measures& measures,
@@ -108,6 +108,11 @@ public:
   }
 
 private:
+  /**
+   * Per body b, the monitor node's displacement, velocity and acceleration along the impact
+   * direction at `state` (entries 3 b, 3 b + 1, 3 b + 2). Collective.
+   */
+  std::vector<double> monitor_motions(const StepState& state) const;
   /** The VTU frame and profiles of the row `frame` if scheduled. */
   void write_fields(unsigned int frame,
                     unsigned int nominal_step,

@@ -118,12 +118,15 @@ public:
   /** All nodes (body, reference position, DoFs); valid after run(). */
   const std::vector<Node<dim>>& all_nodes() const { return problem->discretization.nodes->nodes(); }
 
-  /** State at the last completed step; valid after run(). */
-  const Vector<double>& current_displacement() const
+  /** State at the last completed step, whole (collective); valid after run(). */
+  Vector<double> current_displacement() const
   {
-    return problem->stepper->state().displacement;
+    return gather_whole(problem->stepper->state().displacement);
   }
-  const Vector<double>& current_velocity() const { return problem->stepper->state().velocity; }
+  Vector<double> current_velocity() const
+  {
+    return gather_whole(problem->stepper->state().velocity);
+  }
 
   /** The node whose motion is recorded as u_tip_<b>, v_tip_<b>, a_tip_<b>, per body. */
   const std::vector<Node<dim>>& monitor_nodes() const { return recorder->monitor_nodes(); }
@@ -157,10 +160,13 @@ private:
 
   /** What must match between a checkpoint and the run that resumes it. */
   ProblemFingerprint problem_fingerprint() const;
-  /** Writes or reads everything a resumed run needs to repeat the uninterrupted one exactly. */
+  /**
+   * Writes or reads everything a resumed run needs to repeat the uninterrupted one exactly, the
+   * step's state as `step` (whole: gathered before writing, assigned after reading).
+   */
   template <class Archive>
-  void serialize_state(Archive& archive);
-  /** Writes Output/directory/checkpoint.bin atomically (rank 0). */
+  void serialize_state(Archive& archive, StepState::Whole& step);
+  /** Writes Output/directory/checkpoint.bin atomically (rank 0; collective). */
   void write_checkpoint();
 
   /** prepare(), the step controller, the initial record or the checkpoint, the history file. */

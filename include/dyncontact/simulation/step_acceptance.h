@@ -49,9 +49,9 @@ public:
    */
   std::string check(double time,
                     const Measures& measures,
-                    const Vector<double>& displacement_before,
+                    const DistributedVector& displacement_before,
                     const typename ContactConstraints<dim>::State& contact_before,
-                    const Vector<double>& displacement,
+                    const DistributedVector& displacement,
                     bool can_cut);
 
   /** Accepts the step last passed to check() (which returned no reason). */
@@ -75,9 +75,9 @@ private:
   /** The guards' figures of a state at `time` with `measures`. */
   StepGuards::Figures figures(double time, const Measures& measures) const;
   /** The event control's reason to cut, or an empty string (see the class). */
-  std::string event_failure(const Vector<double>& displacement_before,
+  std::string event_failure(const DistributedVector& displacement_before,
                             const typename ContactConstraints<dim>::State& contact_before,
-                            const Vector<double>& displacement,
+                            const DistributedVector& displacement,
                             double energy) const;
 
   const GuardParameters parameters;

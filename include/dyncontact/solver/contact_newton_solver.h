@@ -101,28 +101,33 @@ public:
    * u_{n+1} = predictor + increment. The contact multipliers and active set are updated in place.
    * Unless the initial guess is already the answer, Newton iterates from the last converged
    * configuration `last_displacement` u_n instead (the increment u_n - u~; see the class
-   * documentation). The vectors are whole (n_dofs entries).
+   * documentation). The vectors hold the owned DoFs (the layout of dof_layout()).
    * Throws SolverFailure if Newton does not converge within the iteration limit or the linear
    * solver fails.
    */
-  Report solve(const Vector<double>& predictor,
+  Report solve(const DistributedVector& predictor,
                double inertia_factor,
-               const Vector<double>& external_force,
-               const Vector<double>& last_displacement,
-               Vector<double>& increment);
+               const DistributedVector& external_force,
+               const DistributedVector& last_displacement,
+               DistributedVector& increment);
+
+  /** The layout of the displacement DoFs' vectors: each rank its owned DoFs. */
+  const std::shared_ptr<const Utilities::MPI::Partitioner>& dof_layout() const
+  {
+    return owned_dofs;
+  }
 
   /**
    * Q(u) at the displacement of the last residual evaluation (the converged one after solve),
-   * whole (gathered: collective).
+   * owned DoFs.
    */
-  Vector<double> internal_force() const { return gather_whole(residual.internal_force()); }
+  const DistributedVector& internal_force() const { return residual.internal_force(); }
 
   /**
-   * The force rows of the last evaluated residual (the converged one after solve), n_dofs
-   * entries: c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs); whole (gathered:
-   * collective).
+   * The force rows of the last evaluated residual (the converged one after solve), owned DoFs:
+   * c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs).
    */
-  Vector<double> last_residual() const { return gather_whole(residual.force_rows()); }
+  const DistributedVector& last_residual() const { return residual.force_rows(); }
 
   /**
    * The scales of the last tangent (0: none yet), which scale the round-off floor and the merit

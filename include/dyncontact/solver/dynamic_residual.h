@@ -46,9 +46,9 @@ public:
   /** The data of one time step's equation, fixed during its Newton iteration. */
   struct Step
   {
-    const Vector<double>& predictor;      ///< u~ [length], n_dofs entries
-    double inertia_factor;                ///< c = 1/(beta dt^2) [1/time^2]
-    const Vector<double>& external_force; ///< W at t_{n+1} [force], n_dofs entries
+    const DistributedVector& predictor;      ///< u~ [length], owned DoFs
+    double inertia_factor;                   ///< c = 1/(beta dt^2) [1/time^2]
+    const DistributedVector& external_force; ///< W at t_{n+1} [force], owned DoFs
   };
 
   /** The figures of one evaluation for Newton's convergence test and line search. */

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/base/linear_algebra.h>
 #include <dyncontact/time_integration/integrator_family.h>
 #include <dyncontact/time_integration/rate_map.h>
 #include <dyncontact/time_integration/time_integration_parameters.h>
@@ -106,32 +107,36 @@ public:
   /** t_{n+1-alpha_f} = t_{n+1} - alpha_f dt [time], where W is evaluated. */
   double load_time(double new_time) const { return new_time - alpha_f_value * dt; }
 
-  /** The predictor u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, every DoF (sizes of u_n). */
-  void predict(const Vector<double>& u_n,
-               const Vector<double>& v_n,
-               const Vector<double>& a_n,
-               Vector<double>& predictor) const;
+  /**
+   * The predictor u~ = u_n + dt v_n + dt^2 (1/2 - beta) a_n, every owned DoF (the vectors all
+   * have the layout of u_n; `predictor` is given it).
+   */
+  void predict(const DistributedVector& u_n,
+               const DistributedVector& v_n,
+               const DistributedVector& a_n,
+               DistributedVector& predictor) const;
 
   /**
    * W_eff = (W(t_{n+1-alpha_f}) - alpha_m M a_n - alpha_f Q(u_n)) / (1 - alpha_f) [force], every
    * DoF: the right-hand side of the step equation. `external_force` is W at load_time(),
-   * `old_inertia_force` M a_n, `old_internal_force` Q(u_n), all of one size; W for newmark.
+   * `old_inertia_force` M a_n, `old_internal_force` Q(u_n), all of one layout; W for newmark.
    */
-  void effective_force(const Vector<double>& external_force,
-                       const Vector<double>& old_inertia_force,
-                       const Vector<double>& old_internal_force,
-                       Vector<double>& effective) const;
+  void effective_force(const DistributedVector& external_force,
+                       const DistributedVector& old_inertia_force,
+                       const DistributedVector& old_internal_force,
+                       DistributedVector& effective) const;
 
   /**
    * a_{n+1} = increment / (beta dt^2) and v_{n+1} from the converged increment u_{n+1} - u~
-   * (every DoF, every member). Working with the increment avoids the cancellation of
-   * u_{n+1} - u~, which the large factor 1/(beta dt^2) would turn into momentum drift.
+   * (every owned DoF, every member; the outputs are given the layout of `increment`). Working
+   * with the increment avoids the cancellation of u_{n+1} - u~, which the large factor
+   * 1/(beta dt^2) would turn into momentum drift.
    */
-  void update_rates(const Vector<double>& increment,
-                    const Vector<double>& v_n,
-                    const Vector<double>& a_n,
-                    Vector<double>& v_new,
-                    Vector<double>& a_new) const;
+  void update_rates(const DistributedVector& increment,
+                    const DistributedVector& v_n,
+                    const DistributedVector& a_n,
+                    DistributedVector& v_new,
+                    DistributedVector& a_new) const;
 
   /**
    * The algorithmic energy [energy] of a state, from kinetic_energy = 1/2 v.Mv, strain_energy,

@@ -25,9 +25,12 @@ namespace dyncontact
  *  - finish(): u_{n+1} = predictor + increment, the integrator's rates (eq. 12) and the
  *    treatment's rate correction (eqs. 19-24 for the paper's scheme).
  * The treatment sees the contact nodes only: the stepper gathers the states it reads onto the
- * contact border (ContactBorder) and writes back what it changes. It owns the current StepState;
- * the integrator, lumped mass, fixed DoFs, loads, contact, its treatment and the Newton solver are
- * the caller's and must outlive it.
+ * contact border (ContactBorder) and writes back what it changes. It owns the current StepState,
+ * whose vectors, like the predictor and the increment, hold each rank's owned DoFs (the layout of
+ * the solver's dof_layout()); the contact geometry of u_n is updated from it gathered whole (until
+ * the geometry works on border data). The integrator, lumped mass (whole), fixed DoFs, loads,
+ * contact, its treatment and the Newton solver are the caller's and must outlive it. Every
+ * member function is collective.
  */
 template <int dim>
 class ImplicitStepper
@@ -42,9 +45,9 @@ public:
                   ContactNewtonSolver<dim>& solver);
 
   /**
-   * The initial state: u_0 = 0, `initial_velocity` (n_dofs), Q(u_0) of `bodies`, W(0) and the
-   * acceleration of equilibrium M a_0 = W(0) - Q(u_0) (no contact at t = 0); v_0 and a_0 zero at
-   * fixed DoFs, a_0 zero at massless DoFs (Contact/dynamics = mass-redistribution), whose rates
+   * The initial state: u_0 = 0, `initial_velocity` (whole, n_dofs), Q(u_0) of `bodies`, W(0) and
+   * the acceleration of equilibrium M a_0 = W(0) - Q(u_0) (no contact at t = 0); v_0 and a_0 zero
+   * at fixed DoFs, a_0 zero at massless DoFs (Contact/dynamics = mass-redistribution), whose rates
    * carry no momentum.
    */
   void start(const Vector<double>& initial_velocity, const ElasticBodies<dim>& bodies);
@@ -56,25 +59,25 @@ public:
   /**
    * Solves the step from `before` to `time` at the integrator's step size: sets the state's
    * internal force Q and external force W(`time`) and the increment over the predictor
-   * (`increment`, resized to n_dofs). Returns the linear solves; throws SolverFailure.
+   * (`increment`, owned DoFs). Returns the linear solves; throws SolverFailure. Collective.
    */
-  unsigned int solve(const StepState& before, double time, Vector<double>& increment);
+  unsigned int solve(const StepState& before, double time, DistributedVector& increment);
 
   /**
    * After solve() and the caller's correction of `increment`: the displacement, velocity and
    * acceleration of the state at the step's end, the treatment's rate correction applied.
    */
-  void finish(const StepState& before, const Vector<double>& increment);
+  void finish(const StepState& before, const DistributedVector& increment);
 
   /**
    * The balance the last step solved, M a + (Q - W) = contact force: its acceleration and net
    * force (Q - W) at t_{n+1} for Newmark, at the intermediate times of a dissipative member
    * (a_{n+1-alpha_m}, Q_{n+1-alpha_f} - W(t_{n+1-alpha_f})). Valid after finish().
    */
-  void solved_balance(Vector<double>& acceleration, Vector<double>& net_force) const;
+  void solved_balance(DistributedVector& acceleration, DistributedVector& net_force) const;
 
   /** W(t_{n+1-alpha_f}) of the last step for a dissipative member; empty for Newmark. */
-  const Vector<double>& step_load() const { return load_at_balance; }
+  const DistributedVector& step_load() const { return load_at_balance; }
 
 private:
   const GeneralizedAlpha& integrator;
@@ -92,11 +95,11 @@ private:
   const std::vector<bool> border_fixed;
   StepState current;
   /** The step's predictor, and the acceleration at t_n it used (a treatment may replace a_n). */
-  Vector<double> predictor, start_acceleration;
+  DistributedVector predictor, start_acceleration;
   /**
    * For a dissipative member, the old state's parts of the last step's balance: a_n as the step
    * used it, and alpha_f Q(u_n) - W(t_{n+1-alpha_f}); and that load. Empty for Newmark.
    */
-  Vector<double> old_balance_acceleration, old_balance_net_force, load_at_balance;
+  DistributedVector old_balance_acceleration, old_balance_net_force, load_at_balance;
 };
 } // namespace dyncontact
