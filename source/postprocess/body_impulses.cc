@@ -87,19 +87,21 @@ typename BodyImpulses<dim>::Forces BodyImpulses<dim>::forces(const StepState& st
   const std::vector<bool> in_active_pair = active_pair_dofs();
   const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
   Forces forces{std::vector<double>(n_bodies, 0.), std::vector<double>(n_bodies, 0.)};
-  for (const types::global_dof_index i : state.external_force.locally_owned_elements())
-  {
-    double force = state.external_force(i);
-    if (every_dof || in_active_pair[i] || is_fixed_dof[i])
-    {
-      const double balance =
-          mass[i] * state.acceleration(i) + state.internal_force(i) - state.external_force(i);
-      force += balance;
-      if (!is_fixed_dof[i])
-        forces.contact[dof_body[i]] += dof_direction[i] * balance;
-    }
-    forces.total[dof_body[i]] += dof_direction[i] * force;
-  }
+  for_each_owned_row(state.external_force,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       double force = state.external_force.local_element(j);
+                       if (every_dof || in_active_pair[i] || is_fixed_dof[i])
+                       {
+                         const double balance = mass[i] * state.acceleration.local_element(j) +
+                                                state.internal_force.local_element(j) -
+                                                state.external_force.local_element(j);
+                         force += balance;
+                         if (!is_fixed_dof[i])
+                           forces.contact[dof_body[i]] += dof_direction[i] * balance;
+                       }
+                       forces.total[dof_body[i]] += dof_direction[i] * force;
+                     });
   sum_over_ranks(forces.total, state.external_force.get_mpi_communicator());
   sum_over_ranks(forces.contact, state.external_force.get_mpi_communicator());
   return forces;
@@ -132,22 +134,26 @@ void BodyImpulses<dim>::accumulate(const StepState& start,
   std::vector<double> impulse_sums = partial_sums_start(impulses, communicator),
                       contact_sums = partial_sums_start(contact_part, communicator),
                       work_sum     = partial_sums_start({accumulated.external_work}, communicator);
-  for (const types::global_dof_index i : state.displacement.locally_owned_elements())
-  {
-    if (is_contact_dof[i])
-    {
-      const double correction =
-          dof_direction[i] * mass[i] *
-          (state.velocity(i) - start.velocity(i) -
-           dt * ((1. - gamma) * start.acceleration(i) + gamma * state.acceleration(i)));
-      impulse_sums[dof_body[i]] += correction;
-      contact_sums[dof_body[i]] += correction;
-    }
-    work_sum[0] += (step_load.size() > 0 ? step_load(i)
-                                         : (1. - gamma) * start.external_force(i) +
-                                               gamma * state.external_force(i)) *
-                   (state.displacement(i) - start.displacement(i));
-  }
+  for_each_owned_row(state.displacement,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       if (is_contact_dof[i])
+                       {
+                         const double correction =
+                             dof_direction[i] * mass[i] *
+                             (state.velocity.local_element(j) - start.velocity.local_element(j) -
+                              dt * ((1. - gamma) * start.acceleration.local_element(j) +
+                                    gamma * state.acceleration.local_element(j)));
+                         impulse_sums[dof_body[i]] += correction;
+                         contact_sums[dof_body[i]] += correction;
+                       }
+                       work_sum[0] += (step_load.size() > 0
+                                           ? step_load.local_element(j)
+                                           : (1. - gamma) * start.external_force.local_element(j) +
+                                                 gamma * state.external_force.local_element(j)) *
+                                      (state.displacement.local_element(j) -
+                                       start.displacement.local_element(j));
+                     });
   for (std::vector<double>* sums : {&impulse_sums, &contact_sums, &work_sum})
     sum_over_ranks(*sums, communicator);
   impulses                  = impulse_sums;
@@ -170,25 +176,36 @@ void BodyImpulses<dim>::balance_momenta(DistributedVector& increment,
   // gap tolerance.
   const std::vector<bool> in_active_pair = active_pair_dofs();
   std::vector<double> residual_sum(n_bodies, 0.), inertia_sum(n_bodies, 0.);
-  for (const types::global_dof_index i : increment.locally_owned_elements())
-    if (!is_fixed_dof[i] && dof_direction[i] != 0. && !in_active_pair[i])
-    {
-      residual_sum[dof_body[i]] += dof_direction[i] * residual(i);
-      inertia_sum[dof_body[i]] += c * mass[i] * dof_direction[i] * dof_direction[i];
-    }
+  for_each_owned_row(increment,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       if (is_fixed_dof[i] || dof_direction[i] == 0. || in_active_pair[i])
+                         return;
+                       residual_sum[dof_body[i]] += dof_direction[i] * residual.local_element(j);
+                       inertia_sum[dof_body[i]] +=
+                           c * mass[i] * dof_direction[i] * dof_direction[i];
+                     });
   sum_over_ranks(residual_sum, increment.get_mpi_communicator());
   sum_over_ranks(inertia_sum, increment.get_mpi_communicator());
-  for (const types::global_dof_index i : increment.locally_owned_elements())
-    if (!is_fixed_dof[i] && dof_direction[i] != 0. && inertia_sum[dof_body[i]] > 0.)
-      increment(i) -= residual_sum[dof_body[i]] / inertia_sum[dof_body[i]] * dof_direction[i];
+  for_each_owned_row(increment,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       if (!is_fixed_dof[i] && dof_direction[i] != 0. &&
+                           inertia_sum[dof_body[i]] > 0.)
+                         increment.local_element(j) -= residual_sum[dof_body[i]] /
+                                                       inertia_sum[dof_body[i]] * dof_direction[i];
+                     });
 }
 
 template <int dim>
 std::vector<double> BodyImpulses<dim>::momenta(const DistributedVector& velocity) const
 {
   std::vector<double> momenta(n_bodies, 0.);
-  for (const types::global_dof_index i : velocity.locally_owned_elements())
-    momenta[dof_body[i]] += mass[i] * dof_direction[i] * velocity(i);
+  for_each_owned_row(velocity,
+                     [&](const types::global_dof_index i, const unsigned int j) {
+                       momenta[dof_body[i]] +=
+                           mass[i] * dof_direction[i] * velocity.local_element(j);
+                     });
   sum_over_ranks(momenta, velocity.get_mpi_communicator());
   return momenta;
 }

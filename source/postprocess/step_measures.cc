@@ -28,12 +28,15 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
   const DistributedVector &velocity = state.velocity, &acceleration = state.acceleration;
   const MPI_Comm communicator = velocity.get_mpi_communicator();
   Measures measures{};
-  for (const types::global_dof_index i : velocity.locally_owned_elements())
-  {
-    measures.kinetic_energy += 0.5 * mass[i] * velocity(i) * velocity(i);
-    measures.acceleration_energy += 0.5 * mass[i] * acceleration(i) * acceleration(i);
-    measures.momentum_magnitude += mass[i] * std::abs(velocity(i));
-  }
+  for_each_owned_row(velocity,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       const double v = velocity.local_element(j),
+                                    a = acceleration.local_element(j);
+                       measures.kinetic_energy += 0.5 * mass[i] * v * v;
+                       measures.acceleration_energy += 0.5 * mass[i] * a * a;
+                       measures.momentum_magnitude += mass[i] * std::abs(v);
+                     });
   measures.kinetic_energy      = Utilities::MPI::sum(measures.kinetic_energy, communicator);
   measures.acceleration_energy = Utilities::MPI::sum(measures.acceleration_energy, communicator);
   measures.momentum_magnitude  = Utilities::MPI::sum(measures.momentum_magnitude, communicator);

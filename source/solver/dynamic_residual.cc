@@ -71,8 +71,12 @@ void DynamicResidual<dim>::assemble(const Step& step,
     throw;
   }
   inertia_force.reinit(internal_force_values, /*omit_zeroing_entries=*/true);
-  for (const auto i : increment.locally_owned_elements())
-    inertia_force(i) = step.inertia_factor * lumped_mass[i] * increment(i);
+  for_each_owned_row(increment,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       inertia_force.local_element(j) =
+                           step.inertia_factor * lumped_mass[i] * increment.local_element(j);
+                     });
   if (tangent != nullptr)
     tangent->add_to_diagonal(lumped_mass, step.inertia_factor);
   // The contact layer works on the contact border: G^T lambda there, scattered to the volume.
@@ -98,13 +102,17 @@ DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double
 {
   force_residual.reinit(internal_force_values, /*omit_zeroing_entries=*/true);
   double force_residual_squared = 0.;
-  for (const auto i : force_residual.locally_owned_elements())
-  {
-    force_residual(i) = is_fixed[i] ? 0.
-                                    : inertia_force(i) + internal_force_values(i) -
-                                          step.external_force[i] - contact_force(i);
-    force_residual_squared += force_residual(i) * force_residual(i);
-  }
+  for_each_owned_row(force_residual,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       double& r = force_residual.local_element(j);
+                       r         = is_fixed[i] ? 0.
+                                               : inertia_force.local_element(j) +
+                                             internal_force_values.local_element(j) -
+                                             step.external_force.local_element(j) -
+                                             contact_force.local_element(j);
+                       force_residual_squared += r * r;
+                     });
   force_residual_squared =
       Utilities::MPI::sum(force_residual_squared, force_residual.get_mpi_communicator());
   Figures figures{};

@@ -28,13 +28,18 @@ void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
   bodies.assemble_internal_force(gather_whole(current.displacement), internal_force, nullptr);
   current.internal_force.copy_locally_owned_data_from(internal_force);
   copy_owned_entries(loads.force(0.), current.external_force);
-  for (const types::global_dof_index i : current.velocity.locally_owned_elements())
-  {
-    current.acceleration(i) =
-        mass[i] > 0. ? (current.external_force(i) - current.internal_force(i)) / mass[i] : 0.;
-    if (is_fixed_dof[i])
-      current.velocity(i) = current.acceleration(i) = 0.;
-  }
+  for_each_owned_row(current.velocity,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       double &v = current.velocity.local_element(j),
+                              &a = current.acceleration.local_element(j);
+                       a         = mass[i] > 0. ? (current.external_force.local_element(j) -
+                                           current.internal_force.local_element(j)) /
+                                              mass[i]
+                                                : 0.;
+                       if (is_fixed_dof[i])
+                         v = a = 0.;
+                     });
 }
 
 template <int dim>
@@ -71,8 +76,11 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
     load_at_balance.reinit(before.displacement, true);
     copy_owned_entries(loads.force(integrator.load_time(time)), load_at_balance);
     DistributedVector old_inertia_force(start_acceleration);
-    for (const types::global_dof_index i : old_inertia_force.locally_owned_elements())
-      old_inertia_force(i) = mass[i] * start_acceleration(i);
+    for_each_owned_row(old_inertia_force,
+                       [&](const types::global_dof_index i, const unsigned int j) {
+                         old_inertia_force.local_element(j) =
+                             mass[i] * start_acceleration.local_element(j);
+                       });
     integrator.effective_force(
         load_at_balance, old_inertia_force, before.internal_force, effective_force);
     old_balance_acceleration = start_acceleration;

@@ -23,6 +23,19 @@ using DistributedVector = LinearAlgebra::distributed::Vector<double>;
  */
 Vector<double> gather_whole(const DistributedVector& vector);
 
+/**
+ * Calls `f(i, j)` for each owned row of `vector` in ascending order: i its global index, j its
+ * local one (local_element(j); the first locally_owned_size() local entries are the owned rows of
+ * every DistributedVector, ghosts follow them). Vectors over the same owned rows share j.
+ */
+template <class Function>
+void for_each_owned_row(const DistributedVector& vector, const Function& f)
+{
+  const types::global_dof_index first = vector.get_partitioner()->local_range().first;
+  for (unsigned int j = 0; j < vector.locally_owned_size(); ++j)
+    f(first + j, j);
+}
+
 /** Sets the owned entries of `vector` to those of the whole vector `whole` (same size). */
 void copy_owned_entries(const Vector<double>& whole, DistributedVector& vector);
 } // namespace dyncontact
