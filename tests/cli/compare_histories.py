@@ -5,10 +5,11 @@ Usage: compare_histories.py A.csv B.csv TOLERANCE
 Passes (exit 0) when both have the same columns and rows and, for every column except
 newton_iterations, max |a - b| <= TOLERANCE * max |a| over that column; prints the worst column.
 Columns that are round-off or tolerance-level by nature are scaled by the quantity they measure
-instead of by themselves (SCALE_COLUMN): the force imbalance by the contact force, the
-penetration by the displacement of the contact pole, the normal velocity and acceleration jumps
-by the pole's velocity and acceleration. A body's momentum and impulse are scaled by the largest
-momentum or impulse of any body (MOMENTUM_COLUMNS): a body at rest by symmetry (the middle of
+(SCALE_COLUMN), or by themselves where they are larger: the force imbalance by the contact force,
+the penetration by the displacement of the contact pole, the normal velocity and acceleration
+jumps by the pole's velocity and acceleration (a jump the contact-dynamics treatment leaves, as
+mass redistribution does at the three spheres' two contacts, can exceed them). A body's momentum and impulse are scaled by the
+largest momentum or impulse of any body (MOMENTUM_COLUMNS): a body at rest by symmetry (the middle of
 three spheres) has a momentum of round-off size, which is no scale for its own differences.
 """
 import csv
@@ -45,7 +46,7 @@ def main():
             scale_columns = [j for j, other in enumerate(names_a)
                              if other.startswith(MOMENTUM_COLUMNS)]
         else:
-            scale_columns = [names_a.index(SCALE_COLUMN.get(name, name))]
+            scale_columns = sorted({column, names_a.index(SCALE_COLUMN.get(name, name))})
         scale = max(abs(row[j]) for row in rows_a for j in scale_columns)
         difference = max(abs(a[column] - b[column]) for a, b in zip(rows_a, rows_b))
         relative = difference / scale if scale > 0 else difference
