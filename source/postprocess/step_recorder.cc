@@ -179,26 +179,23 @@ void StepRecorder<dim>::write_fields(const unsigned int frame,
     return;
   TimerOutput::Scope scope(timer, "output");
   // The fields whole on every rank (collective), for the frame's pieces and the root's profile.
-  const StepState::Whole whole = state.gather();
+  const Vector<double> displacement = gather_whole(state.displacement),
+                       velocity     = gather_whole(state.velocity),
+                       acceleration = gather_whole(state.acceleration);
   const auto samples = surface_contact ? fields.pressure_samples(pressures, state.displacement)
                                        : std::vector<typename FieldOutput<dim>::PressureSample>();
   if (vtu_frame)
   {
     const Vector<double> traction =
         surface_contact ? fields.traction(pressures, state.displacement.size()) : Vector<double>();
-    field_output->write_fields(frame,
-                               time,
-                               whole.displacement,
-                               whole.velocity,
-                               whole.acceleration,
-                               surface_contact ? &traction : nullptr);
+    field_output->write_fields(
+        frame, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
     if (surface_contact)
-      field_output->write_contact_surface(frame, time, whole.displacement, samples);
+      field_output->write_contact_surface(frame, time, displacement, samples);
   }
   if (profile && is_root_rank)
   {
-    field_output->write_profile(
-        time, nodes.nodes(), whole.displacement, whole.velocity, whole.acceleration);
+    field_output->write_profile(time, nodes.nodes(), displacement, velocity, acceleration);
     if (surface_contact)
       field_output->write_contact_pressure(time, samples);
   }

@@ -122,10 +122,14 @@ DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double
   // contact force itself passed a loose tolerance. Below the reference, a round-off floor:
   // the terms that cancel in K u and c M u (a rigid translation has Q = 0 up to round-off
   // of the size eps max diag(K_eff) |u|), which no tolerance can go under.
-  figures.reference_force =
-      internal_force_values.l2_norm() + step.external_force.l2_norm() + contact_force.l2_norm();
+  // Collective norms, one statement each: the same order on every rank.
+  const double internal_norm = internal_force_values.l2_norm();
+  const double external_norm = step.external_force.l2_norm();
+  const double contact_norm  = contact_force.l2_norm();
+  figures.reference_force    = internal_norm + external_norm + contact_norm;
+  const double inertia_norm  = inertia_force.l2_norm();
   figures.round_off_floor =
-      roundoff_factor * (scales.largest_row_sum * displacement.l2_norm() + inertia_force.l2_norm());
+      roundoff_factor * (scales.largest_row_sum * displacement.l2_norm() + inertia_norm);
   figures.force_residual       = std::sqrt(force_residual_squared);
   const MultiplierBlock& block = contact.multiplier_block();
   for (unsigned int k = 0; k < block.n_pairs(); ++k)

@@ -8,9 +8,10 @@ Columns that are round-off or tolerance-level by nature are scaled by the quanti
 (SCALE_COLUMN), or by themselves where they are larger: the force imbalance by the contact force,
 the penetration by the displacement of the contact pole, the normal velocity and acceleration
 jumps by the pole's velocity and acceleration (a jump the contact-dynamics treatment leaves, as
-mass redistribution does at the three spheres' two contacts, can exceed them). A body's momentum and impulse are scaled by the
-largest momentum or impulse of any body (MOMENTUM_COLUMNS): a body at rest by symmetry (the middle of
-three spheres) has a momentum of round-off size, which is no scale for its own differences.
+mass redistribution does at the three spheres' two contacts, can exceed them). A body's momentum
+and impulse are scaled by the largest momentum or impulse of any body (MOMENTUM_COLUMNS): a body
+at rest by symmetry (the middle of three spheres) has a momentum of round-off size, which is no
+scale for its own differences.
 """
 import csv
 import sys

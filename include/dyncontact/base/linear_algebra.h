@@ -15,6 +15,9 @@ namespace dyncontact
  * this form (issue 27, move 5: owned vectors in place of whole ones on every rank).
  */
 using DistributedVector = LinearAlgebra::distributed::Vector<double>;
+// Assigning a DistributedVector to one with another partitioner object (an empty one included)
+// reinitializes it, which in deal.II 9.4 is collective (Utilities::MPI::min): such copies must be
+// reached by every rank.
 
 /**
  * The whole of `vector` (all size() entries) on every rank: each rank's owned range gathered

@@ -17,8 +17,10 @@ namespace dyncontact
  * jumps across the active pairs, the penetration, the contact radius, the event work of a step,
  * the nodal contact traction and the pressure samples of the contact surfaces. Reads the
  * ContactConstraints' pairs, active set, pair forces and gaps (which must outlive it); nothing
- * here feeds the solve. Vectors passed in and out are volume vectors (over the displacement
- * DoFs); each query gathers what it reads onto the contact border (ContactBorder).
+ * here feeds the solve. Vectors passed in and out are volume vectors over the displacement DoFs
+ * (the state's: each rank its owned DoFs; the lumped mass and the traction whole); each query
+ * gathers what it reads onto the contact border (ContactBorder), so every query that takes a
+ * DistributedVector is collective.
  */
 template <int dim>
 class ContactFields

@@ -52,6 +52,7 @@ public:
   /**
    * The measures of the current state; `after_a_step` false for the initial state (no balance
    * solved yet: the contact force and the jumps are zero, the strain energy is evaluated).
+   * Collective: the sums over DoFs are summed over the ranks.
    */
   Measures measure(bool after_a_step) const;
 

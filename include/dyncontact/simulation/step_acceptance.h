@@ -45,7 +45,7 @@ public:
    * Why the step from `displacement_before` (with the pairs of `contact_before`) to the current
    * state, at the integrator's step size, must be cut: one line naming the guard and its prm
    * entry, or an empty string. `time` [time] is the step's end, `measures` those of its state;
-   * `can_cut`: a smaller step exists (the event control applies only then).
+   * `can_cut`: a smaller step exists (the event control applies only then). Collective.
    */
   std::string check(double time,
                     const Measures& measures,

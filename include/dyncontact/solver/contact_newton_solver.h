@@ -52,10 +52,11 @@ namespace dyncontact
  * be evaluated (an inverted element) or grows while the active set stays the same, the residual
  * measured as the force residual together with the active gaps times the largest tangent diagonal.
  *
- * Vectors passed in and out are whole on every rank. Inside, the increments, the Newton update
- * and the residual's force vectors hold each rank's owned DoFs (DistributedVector); the
- * displacement of an iterate is gathered whole once per update for the contact layer (the parallel
- * layout of the matrix and the direct solver are SaddlePointSystem's).
+ * Vectors passed in and out hold each rank's owned DoFs (DistributedVector, the layout of
+ * dof_layout()), and so do the increments, the Newton update and the residual's force vectors
+ * inside; the displacement of an iterate is gathered whole once per update for the contact layer
+ * (the parallel layout of the matrix and the direct solver are SaddlePointSystem's). solve() is
+ * collective.
  *
  * The class is the Newton driver of three units: a SaddlePointSystem (the matrix, its fixed
  * sparsity pattern and the direct solve), a DynamicResidual (the residual, the tangent and the
@@ -118,14 +119,15 @@ public:
   }
 
   /**
-   * Q(u) at the displacement of the last residual evaluation (the converged one after solve),
-   * owned DoFs.
+   * Q(u) at the displacement of the last residual evaluation (the converged one after solve):
+   * ElasticBodies' layout (the owned DoFs, then ghosts), read by local_element(j) for the j-th
+   * owned DoF or copied by copy_locally_owned_data_from().
    */
   const DistributedVector& internal_force() const { return residual.internal_force(); }
 
   /**
-   * The force rows of the last evaluated residual (the converged one after solve), owned DoFs:
-   * c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs).
+   * The force rows of the last evaluated residual (the converged one after solve):
+   * c M (u - u~) + Q(u) - W - G^T lambda (zero at fixed DoFs), in the layout of internal_force().
    */
   const DistributedVector& last_residual() const { return residual.force_rows(); }
 

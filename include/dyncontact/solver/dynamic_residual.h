@@ -114,8 +114,8 @@ public:
                    SaddlePointSystem<dim>* tangent);
 
   /**
-   * The force rows of the last evaluation's residual (n_dofs entries, zero at fixed DoFs; this
-   * rank's owned DoFs).
+   * The force rows of the last evaluation's residual (zero at fixed DoFs): this rank's owned DoFs,
+   * in the layout of internal_force().
    */
   const DistributedVector& force_rows() const { return force_residual; }
 

@@ -118,7 +118,7 @@ public:
 
   /**
    * W_eff = (W(t_{n+1-alpha_f}) - alpha_m M a_n - alpha_f Q(u_n)) / (1 - alpha_f) [force], every
-   * DoF: the right-hand side of the step equation. `external_force` is W at load_time(),
+   * owned DoF: the right-hand side of the step equation. `external_force` is W at load_time(),
    * `old_inertia_force` M a_n, `old_internal_force` Q(u_n), all of one layout; W for newmark.
    */
   void effective_force(const DistributedVector& external_force,
