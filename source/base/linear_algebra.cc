@@ -8,7 +8,7 @@
 
 namespace dyncontact
 {
-Vector<double> gather_whole(const DistributedVector& vector)
+Vector<double> gather_on_root(const DistributedVector& vector)
 {
   const MPI_Comm communicator = vector.get_mpi_communicator();
   // A DistributedVector's owned rows are one range (Utilities::MPI::Partitioner): each rank's
@@ -19,15 +19,27 @@ Vector<double> gather_whole(const DistributedVector& vector)
   std::vector<int> offsets(ranges.size()), counts(ranges.size());
   for (std::size_t rank = 0; rank < ranges.size(); ++rank)
     std::tie(offsets[rank], counts[rank]) = ranges[rank];
-  Vector<double> whole(vector.size());
-  const int rc = MPI_Allgatherv(vector.begin(),
-                                range.second,
-                                MPI_DOUBLE,
-                                whole.begin(),
-                                counts.data(),
-                                offsets.data(),
-                                MPI_DOUBLE,
-                                communicator);
+  Vector<double> whole(Utilities::MPI::this_mpi_process(communicator) == 0 ? vector.size() : 0);
+  const int rc = MPI_Gatherv(vector.begin(),
+                             range.second,
+                             MPI_DOUBLE,
+                             whole.begin(),
+                             counts.data(),
+                             offsets.data(),
+                             MPI_DOUBLE,
+                             0,
+                             communicator);
+  AssertThrowMPI(rc);
+  return whole;
+}
+
+Vector<double> gather_whole(const DistributedVector& vector)
+{
+  Vector<double> whole = gather_on_root(vector);
+  if (whole.size() != vector.size()) // not rank 0: room for the broadcast
+    whole.reinit(vector.size(), /*omit_zeroing_entries=*/true);
+  const int rc = MPI_Bcast(
+      whole.begin(), static_cast<int>(whole.size()), MPI_DOUBLE, 0, vector.get_mpi_communicator());
   AssertThrowMPI(rc);
   return whole;
 }

@@ -160,7 +160,7 @@ void Simulation<dim>::serialize_state(Archive& archive, StepState::Whole& step)
 template <int dim>
 void Simulation<dim>::write_checkpoint()
 {
-  StepState::Whole step = problem->stepper->state().gather(); // collective
+  StepState::Whole step = problem->stepper->state().gather_on_root(); // collective
   if (!is_root_rank)
     return;
   TimerOutput::Scope scope(timer, "output");

@@ -9,13 +9,13 @@ void StepState::reinit(const std::shared_ptr<const Utilities::MPI::Partitioner>&
     vector->reinit(owned_dofs);
 }
 
-StepState::Whole StepState::gather() const
+StepState::Whole StepState::gather_on_root() const
 {
-  return {gather_whole(displacement),
-          gather_whole(velocity),
-          gather_whole(acceleration),
-          gather_whole(internal_force),
-          gather_whole(external_force)};
+  return {dyncontact::gather_on_root(displacement),
+          dyncontact::gather_on_root(velocity),
+          dyncontact::gather_on_root(acceleration),
+          dyncontact::gather_on_root(internal_force),
+          dyncontact::gather_on_root(external_force)};
 }
 
 void StepState::assign(const Whole& whole)

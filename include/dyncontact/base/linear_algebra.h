@@ -21,10 +21,16 @@ using DistributedVector = LinearAlgebra::distributed::Vector<double>;
 
 /**
  * The whole of `vector` (all size() entries) on every rank: each rank's owned range gathered
- * to all (MPI_Allgatherv). Collective. For the parts of the code that still work on whole
- * vectors.
+ * to all (MPI_Gatherv to rank 0, MPI_Bcast). Collective. For the parts of the code that still work
+ * on whole vectors.
  */
 Vector<double> gather_whole(const DistributedVector& vector);
+
+/**
+ * The whole of `vector` on rank 0 of its communicator (MPI_Gatherv), an empty vector on the other
+ * ranks. Collective. For what rank 0 alone writes (a checkpoint).
+ */
+Vector<double> gather_on_root(const DistributedVector& vector);
 
 /**
  * Calls `f(i, j)` for each owned row of `vector` in ascending order: i its global index, j its

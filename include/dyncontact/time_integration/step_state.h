@@ -41,8 +41,8 @@ struct StepState
     }
   };
 
-  /** The state whole on every rank. Collective. */
-  Whole gather() const;
+  /** The state whole on rank 0 (what it writes to a checkpoint), empty elsewhere. Collective. */
+  Whole gather_on_root() const;
 
   /** Sets each vector's owned entries from `whole` (the vectors must have their layout). */
   void assign(const Whole& whole);
