@@ -1,4 +1,5 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/postprocess/step_measures.h>
 
 #include <cmath>
@@ -37,9 +38,12 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
                        measures.acceleration_energy += 0.5 * mass[i] * a * a;
                        measures.momentum_magnitude += mass[i] * std::abs(v);
                      });
-  measures.kinetic_energy      = Utilities::MPI::sum(measures.kinetic_energy, communicator);
-  measures.acceleration_energy = Utilities::MPI::sum(measures.acceleration_energy, communicator);
-  measures.momentum_magnitude  = Utilities::MPI::sum(measures.momentum_magnitude, communicator);
+  std::vector<double> sums = {
+      measures.kinetic_energy, measures.acceleration_energy, measures.momentum_magnitude};
+  sum_over_ranks(sums, communicator); // one reduction for the three
+  measures.kinetic_energy      = sums[0];
+  measures.acceleration_energy = sums[1];
+  measures.momentum_magnitude  = sums[2];
   // After a step the solver's last evaluation was at this displacement: reuse its pass.
   measures.strain_energy      = after_a_step ? solver.strain_energy()
                                              : bodies.strain_energy(gather_whole(state.displacement));

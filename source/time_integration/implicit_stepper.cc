@@ -25,7 +25,8 @@ void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
   current.reinit(solver.dof_layout());
   copy_owned_entries(initial_velocity, current.velocity);
   DistributedVector internal_force;
-  bodies.assemble_internal_force(gather_whole(current.displacement), internal_force, nullptr);
+  bodies.assemble_internal_force(
+      Vector<double>(mass.size()), internal_force, nullptr); // Q(u_0 = 0)
   current.internal_force.copy_locally_owned_data_from(internal_force);
   copy_owned_entries(loads.force(0.), current.external_force);
   for_each_owned_row(current.velocity,
