@@ -34,16 +34,19 @@ ContactConstraints<dim>::ContactConstraints(const ContactGeometry<dim>& geometry
   std::vector<std::vector<Node<dim>>> nodes_of_pairs;
   for (unsigned int k = 0; k < volume_pairs.size(); ++k)
     nodes_of_pairs.push_back(geometry.coupled_nodes(k));
-  build_border(nodes_of_pairs);
+  build_border(nodes_of_pairs, geometry.surface_nodes());
 }
 
 template <int dim>
 void ContactConstraints<dim>::build_border(
-    const std::vector<std::vector<Node<dim>>>& nodes_of_pairs)
+    const std::vector<std::vector<Node<dim>>>& nodes_of_pairs,
+    const std::vector<Node<dim>>& surface_nodes)
 {
   std::vector<Node<dim>> all_nodes;
   for (const auto& nodes : nodes_of_pairs)
     all_nodes.insert(all_nodes.end(), nodes.begin(), nodes.end());
+  // The pairs' nodes first: where a node is in both, a pair's copy gives the position.
+  all_nodes.insert(all_nodes.end(), surface_nodes.begin(), surface_nodes.end());
   contact_border = ContactBorder<dim>(all_nodes);
   for (const auto& nodes : nodes_of_pairs)
   {
@@ -80,7 +83,7 @@ void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement
 {
   if (geometry == nullptr)
     return;
-  geometry->update_pairs(displacement, volume_pairs);
+  geometry->update_pairs(BorderDisplacement<dim>{contact_border, displacement}, volume_pairs);
   move_pairs_to_border();
 }
 
@@ -89,7 +92,8 @@ void ContactConstraints<dim>::update_master_points(const Vector<double>& displac
 {
   if (geometry == nullptr)
     return;
-  geometry->update_master_points(displacement, volume_pairs);
+  geometry->update_master_points(BorderDisplacement<dim>{contact_border, displacement},
+                                 volume_pairs);
   move_pairs_to_border();
 }
 
@@ -143,8 +147,10 @@ template <int dim>
 std::vector<bool> ContactConstraints<dim>::contact_dofs(const types::global_dof_index n_dofs) const
 {
   std::vector<bool> flags(n_dofs, false);
-  for (unsigned int i = 0; i < contact_border.n_dofs(); ++i)
-    flags[contact_border.volume_dof(i)] = true;
+  for (const std::vector<unsigned int>& nodes : coupled_nodes)
+    for (const unsigned int node : nodes)
+      for (unsigned int d = 0; d < dim; ++d)
+        flags[contact_border.volume_node(node).dofs[d]] = true;
   return flags;
 }
 
@@ -211,11 +217,10 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
                                                 const double gap_tolerance,
                                                 const double force_tolerance)
 {
-  const Vector<double> border_displacement = contact_border.gather(displacement);
-  bool changed                             = false;
+  bool changed = false;
   std::vector<unsigned int> tensile_pairs;
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    if (!active[k] && constraint_gap(k, border_displacement) < -gap_tolerance)
+    if (!active[k] && constraint_gap(k, displacement) < -gap_tolerance)
     {
       active[k] = true;
       changed   = true;
@@ -249,7 +254,7 @@ ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) c
   std::vector<double> forces(pairs.size(), 0.);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     forces[k] = pair_force(k);
-  return geometry->contact_pressures(displacement, forces);
+  return geometry->contact_pressures(BorderDisplacement<dim>{contact_border, displacement}, forces);
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(ContactConstraints)

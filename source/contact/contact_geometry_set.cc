@@ -36,7 +36,7 @@ void ContactGeometrySet<dim>::update_members(std::vector<ContactPair<dim>>& pair
 }
 
 template <int dim>
-void ContactGeometrySet<dim>::update_pairs(const Vector<double>& displacement,
+void ContactGeometrySet<dim>::update_pairs(const BorderDisplacement<dim>& displacement,
                                            std::vector<ContactPair<dim>>& pairs) const
 {
   update_members(pairs,
@@ -45,7 +45,7 @@ void ContactGeometrySet<dim>::update_pairs(const Vector<double>& displacement,
 }
 
 template <int dim>
-void ContactGeometrySet<dim>::update_master_points(const Vector<double>& displacement,
+void ContactGeometrySet<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
                                                    std::vector<ContactPair<dim>>& pairs) const
 {
   update_members(pairs,
@@ -63,8 +63,20 @@ std::vector<Node<dim>> ContactGeometrySet<dim>::coupled_nodes(const unsigned int
 }
 
 template <int dim>
+std::vector<Node<dim>> ContactGeometrySet<dim>::surface_nodes() const
+{
+  std::vector<Node<dim>> nodes;
+  for (const auto& member : members)
+  {
+    const std::vector<Node<dim>> own = member->surface_nodes();
+    nodes.insert(nodes.end(), own.begin(), own.end());
+  }
+  return nodes;
+}
+
+template <int dim>
 std::vector<double>
-ContactGeometrySet<dim>::contact_pressures(const Vector<double>& displacement,
+ContactGeometrySet<dim>::contact_pressures(const BorderDisplacement<dim>& displacement,
                                            const std::vector<double>& multipliers) const
 {
   AssertDimension(multipliers.size(), all_pairs.size());

@@ -1,9 +1,10 @@
 #include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/contact_surface.h>
 
+#include <deal.II/base/geometry_info.h>
+#include <deal.II/base/qprojector.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
-#include <deal.II/fe/mapping_fe_field.h>
+#include <deal.II/fe/fe.h>
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
@@ -11,29 +12,103 @@
 
 namespace dyncontact
 {
+namespace
+{
+/**
+ * The normal of a face before orientation and normalization, from its tangents a_k = dx/ds_k:
+ * (a_0[1], -a_0[0]) in 2D, a_0 x a_1 in 3D, e_0 in 1D (a face is a point). Its length is the
+ * face's area element per unit reference area (1 in 1D).
+ */
+template <int dim>
+Tensor<1, dim> tangents_normal(const std::array<Tensor<1, dim>, dim - 1>& tangents)
+{
+  if constexpr (dim == 1)
+    return Tensor<1, dim>({1.});
+  else if constexpr (dim == 2)
+    return cross_product_2d(tangents[0]);
+  else
+    return cross_product_3d(tangents[0], tangents[1]);
+}
+} // namespace
+
+template <int dim>
+typename ContactSurface<dim>::FaceTable
+ContactSurface<dim>::tabulate(const FiniteElement<dim>& scalar,
+                              const std::vector<unsigned int>& face_dofs,
+                              const unsigned int face_number,
+                              const Quadrature<dim - 1>& quadrature)
+{
+  const Quadrature<dim> on_cell = QProjector<dim>::project_to_face(
+      ReferenceCells::get_hypercube<dim>(), quadrature, face_number);
+  FaceTable table;
+  table.weights = quadrature.get_weights();
+  for (unsigned int q = 0; q < on_cell.size(); ++q)
+  {
+    table.values.emplace_back();
+    table.tangential_derivatives.emplace_back();
+    for (const unsigned int i : face_dofs)
+    {
+      table.values.back().push_back(scalar.shape_value(i, on_cell.point(q)));
+      const Tensor<1, dim> gradient = scalar.shape_grad(i, on_cell.point(q));
+      std::array<double, dim - 1> derivatives;
+      for (unsigned int k = 0; k + 1 < dim; ++k)
+        derivatives[k] = gradient * GeometryInfo<dim>::unit_tangential_vectors[face_number][k];
+      table.tangential_derivatives.back().push_back(derivatives);
+    }
+  }
+  return table;
+}
+
 template <int dim>
 ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
                                     const Kinematics<dim>& kinematics,
                                     const NodeIndex<dim>& nodes,
                                     const types::boundary_id boundary)
-    : dof_handler(dof_handler), kinematics(kinematics), boundary(boundary),
-      reference_positions(dof_handler.n_dofs())
+    : kinematics(kinematics)
 {
-  for (const auto& node : nodes.nodes())
-    for (unsigned int d = 0; d < dim; ++d)
-      reference_positions[node.dofs[d]] = node.position[d];
-  const FiniteElement<dim>& fe = dof_handler.get_fe();
+  const FiniteElement<dim>& fe     = dof_handler.get_fe();
+  const FiniteElement<dim>& scalar = fe.base_element(0);
+  // Exact for a product of two shape functions times a linear measure factor on a straight face.
+  const QGauss<dim - 1> gauss(fe.degree + 2);
+  const Quadrature<dim - 1> support_points(scalar.get_unit_face_support_points());
+  std::vector<std::vector<unsigned int>> dofs_on_face; // scalar DoFs, per face number
+  for (const unsigned int f : GeometryInfo<dim>::face_indices())
+  {
+    dofs_on_face.emplace_back();
+    for (unsigned int i = 0; i < scalar.n_dofs_per_cell(); ++i)
+      if (scalar.has_support_on_face(i, f))
+        dofs_on_face[f].push_back(i);
+    at_gauss_points.push_back(tabulate(scalar, dofs_on_face[f], f, gauss));
+    at_nodes.push_back(tabulate(scalar, dofs_on_face[f], f, support_points));
+    // The unit cell's own tangents give its outward normal up to this sign; a cell's mapping has
+    // a positive Jacobian, which keeps the side.
+    std::array<Tensor<1, dim>, dim - 1> unit_tangents;
+    for (unsigned int k = 0; k + 1 < dim; ++k)
+      unit_tangents[k] = GeometryInfo<dim>::unit_tangential_vectors[f][k];
+    outward_sign.push_back(
+        tangents_normal<dim>(unit_tangents) * GeometryInfo<dim>::unit_normal_vector[f] > 0. ? 1.
+                                                                                            : -1.);
+  }
+
   std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+  // Per face: the first DoFs of its nodes in the order of the face number's tables, then by unit
+  // face support point.
+  std::vector<std::vector<types::global_dof_index>> face_first_dofs;
   std::vector<types::global_dof_index> first_dofs;
   for (const auto& cell : dof_handler.active_cell_iterators())
-    for (const unsigned int face : cell->face_indices())
-      if (cell->face(face)->at_boundary() && cell->face(face)->boundary_id() == boundary)
+    for (const unsigned int f : cell->face_indices())
+      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary)
       {
-        faces.emplace_back(cell, face);
         cell->get_dof_indices(cell_dofs);
-        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-          if (fe.system_to_component_index(i).first == 0 && fe.has_support_on_face(i, face))
-            first_dofs.push_back(cell_dofs[i]);
+        faces.push_back({f, cell->material_id(), {}});
+        face_first_dofs.emplace_back();
+        for (const unsigned int i : dofs_on_face[f])
+          face_first_dofs.back().push_back(cell_dofs[fe.component_to_system_index(0, i)]);
+        for (unsigned int j = 0; j < scalar.n_dofs_per_face(f); ++j)
+          face_first_dofs.back().push_back(
+              cell_dofs[fe.component_to_system_index(0, scalar.face_to_cell_index(j, f))]);
+        first_dofs.insert(
+            first_dofs.end(), face_first_dofs.back().begin(), face_first_dofs.back().end());
       }
   if (faces.empty())
     throw InputError("the mesh has no boundary faces with id " + std::to_string(boundary) +
@@ -47,73 +122,74 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
       node_of_first_dof.emplace(node.dofs[0], surface_nodes.size());
       surface_nodes.push_back(node);
     }
-  for (const auto& [cell, face] : faces)
+  for (unsigned int face = 0; face < faces.size(); ++face)
   {
-    cell->get_dof_indices(cell_dofs);
-    nodes_of_face.emplace_back();
-    for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-      if (fe.system_to_component_index(i).first == 0 && fe.has_support_on_face(i, face))
-        nodes_of_face.back().emplace_back(i, node_of_first_dof.at(cell_dofs[i]));
-    const FiniteElement<dim>& scalar = fe.base_element(0);
+    const std::vector<types::global_dof_index>& dofs = face_first_dofs[face];
+    const unsigned int n_nodes                       = dofs_on_face[faces[face].face_number].size();
+    for (unsigned int i = 0; i < n_nodes; ++i)
+      faces[face].nodes.push_back(node_of_first_dof.at(dofs[i]));
     support_point_nodes.emplace_back();
-    for (unsigned int j = 0; j < scalar.n_dofs_per_face(face); ++j)
-      support_point_nodes.back().push_back(node_of_first_dof.at(
-          cell_dofs[fe.component_to_system_index(0, scalar.face_to_cell_index(j, face))]));
+    for (unsigned int j = n_nodes; j < dofs.size(); ++j)
+      support_point_nodes.back().push_back(node_of_first_dof.at(dofs[j]));
   }
 }
 
 template <int dim>
-Vector<double> ContactSurface<dim>::current_positions(const Vector<double>& displacement) const
+std::vector<Point<dim>> ContactSurface<dim>::reference_positions() const
 {
-  Vector<double> positions = reference_positions;
-  positions += displacement;
+  std::vector<Point<dim>> positions;
+  for (const Node<dim>& node : surface_nodes)
+    positions.push_back(node.position);
   return positions;
 }
 
 template <int dim>
-template <typename Integrand>
-void ContactSurface<dim>::integrate_over_faces(const Mapping<dim>& mapping,
-                                               const Integrand& integrand) const
+std::vector<Point<dim>>
+ContactSurface<dim>::current_positions(const BorderDisplacement<dim>& displacement) const
 {
-  // Exact for a product of two shape functions times a linear measure factor on a straight face.
-  const FiniteElement<dim>& fe = dof_handler.get_fe();
-  FEFaceValues<dim> at_gauss_points(mapping,
-                                    fe,
-                                    QGauss<dim - 1>(fe.degree + 2),
-                                    update_values | update_quadrature_points | update_JxW_values);
-  for (unsigned int f = 0; f < faces.size(); ++f)
-  {
-    const auto& [cell, face] = faces[f];
-    at_gauss_points.reinit(cell, face);
-    for (unsigned int q = 0; q < at_gauss_points.n_quadrature_points; ++q)
-      integrand(
-          nodes_of_face[f],
-          at_gauss_points,
-          q,
-          kinematics.measure_factor(at_gauss_points.quadrature_point(q), cell->material_id()) *
-              at_gauss_points.JxW(q));
-  }
+  std::vector<Point<dim>> positions;
+  for (const Node<dim>& node : surface_nodes)
+    positions.push_back(displacement.current_position(node));
+  return positions;
 }
 
 template <int dim>
-std::vector<Tensor<1, dim>> ContactSurface<dim>::normals(const Vector<double>& displacement) const
+std::pair<Point<dim>, Tensor<1, dim>>
+ContactSurface<dim>::face_point(const Face& face,
+                                const FaceTable& table,
+                                const unsigned int q,
+                                const std::vector<Point<dim>>& positions) const
 {
-  const FiniteElement<dim>& fe   = dof_handler.get_fe();
-  const Vector<double> positions = current_positions(displacement);
-  const MappingFEField<dim, dim, Vector<double>> current_mapping(dof_handler, positions);
-  // A face quadrature whose points are the face's support points; the node at point q is the one
-  // whose (Lagrange) shape function is one there.
-  const Quadrature<dim - 1> node_points(fe.base_element(0).get_unit_face_support_points());
-  FEFaceValues<dim> at_nodes(
-      current_mapping, fe, node_points, update_values | update_normal_vectors);
-  std::vector<Tensor<1, dim>> nodal_normals(surface_nodes.size());
-  for (unsigned int f = 0; f < faces.size(); ++f)
+  Tensor<1, dim> point;
+  std::array<Tensor<1, dim>, dim - 1> tangents;
+  for (unsigned int i = 0; i < face.nodes.size(); ++i)
   {
-    at_nodes.reinit(faces[f].first, faces[f].second);
-    for (unsigned int q = 0; q < node_points.size(); ++q)
-      for (const auto& [local_dof, node] : nodes_of_face[f])
-        if (at_nodes.shape_value_component(local_dof, q, 0) > 0.5)
-          nodal_normals[node] += at_nodes.normal_vector(q);
+    const Tensor<1, dim>& x_i = positions[face.nodes[i]];
+    point += table.values[q][i] * x_i;
+    for (unsigned int k = 0; k + 1 < dim; ++k)
+      tangents[k] += table.tangential_derivatives[q][i][k] * x_i;
+  }
+  return {Point<dim>(point), outward_sign[face.face_number] * tangents_normal<dim>(tangents)};
+}
+
+template <int dim>
+std::vector<Tensor<1, dim>>
+ContactSurface<dim>::normals(const std::vector<Point<dim>>& positions) const
+{
+  AssertDimension(positions.size(), surface_nodes.size());
+  std::vector<Tensor<1, dim>> nodal_normals(surface_nodes.size());
+  for (const Face& face : faces)
+  {
+    // The table's points are the face's support points; the node at point q is the one whose
+    // (Lagrange) shape function is one there.
+    const FaceTable& table = at_nodes[face.face_number];
+    for (unsigned int q = 0; q < table.values.size(); ++q)
+    {
+      const Tensor<1, dim> normal = face_point(face, table, q, positions).second;
+      for (unsigned int i = 0; i < face.nodes.size(); ++i)
+        if (table.values[q][i] > 0.5)
+          nodal_normals[face.nodes[i]] += normal / normal.norm();
+    }
   }
   for (auto& normal : nodal_normals)
     normal /= normal.norm();
@@ -121,9 +197,10 @@ std::vector<Tensor<1, dim>> ContactSurface<dim>::normals(const Vector<double>& d
 }
 
 template <int dim>
-std::vector<double> ContactSurface<dim>::lumped_areas(const Vector<double>& displacement) const
+std::vector<double>
+ContactSurface<dim>::lumped_areas(const std::vector<Point<dim>>& positions) const
 {
-  const Eigen::SparseMatrix<double> mass = mass_matrix(displacement);
+  const Eigen::SparseMatrix<double> mass = mass_matrix(positions);
   // The shape functions sum to one, so the row sums of the mass matrix are the consistent nodal
   // areas, and their sum is the surface's area.
   const Eigen::VectorXd diagonal = mass.diagonal();
@@ -136,25 +213,24 @@ std::vector<double> ContactSurface<dim>::lumped_areas(const Vector<double>& disp
 
 template <int dim>
 Eigen::SparseMatrix<double>
-ContactSurface<dim>::mass_matrix(const Vector<double>& displacement) const
+ContactSurface<dim>::mass_matrix(const std::vector<Point<dim>>& positions) const
 {
-  const Vector<double> positions = current_positions(displacement);
-  const MappingFEField<dim, dim, Vector<double>> current_mapping(dof_handler, positions);
+  AssertDimension(positions.size(), surface_nodes.size());
   std::vector<Eigen::Triplet<double>> entries; // summed by setFromTriplets
-  integrate_over_faces(current_mapping,
-                       [&entries](const auto& face_nodes,
-                                  const FEFaceValues<dim>& values,
-                                  const unsigned int q,
-                                  const double measure)
-                       {
-                         for (const auto& [dof_i, node_i] : face_nodes)
-                           for (const auto& [dof_j, node_j] : face_nodes)
-                             entries.emplace_back(node_i,
-                                                  node_j,
-                                                  values.shape_value_component(dof_i, q, 0) *
-                                                      values.shape_value_component(dof_j, q, 0) *
-                                                      measure);
-                       });
+  for (const Face& face : faces)
+  {
+    const FaceTable& table = at_gauss_points[face.face_number];
+    for (unsigned int q = 0; q < table.values.size(); ++q)
+    {
+      const auto [point, normal] = face_point(face, table, q, positions);
+      const double measure =
+          kinematics.measure_factor(point, face.body) * (normal.norm() * table.weights[q]);
+      for (unsigned int i = 0; i < face.nodes.size(); ++i)
+        for (unsigned int j = 0; j < face.nodes.size(); ++j)
+          entries.emplace_back(
+              face.nodes[i], face.nodes[j], table.values[q][i] * table.values[q][j] * measure);
+    }
+  }
   Eigen::SparseMatrix<double> mass(surface_nodes.size(), surface_nodes.size());
   mass.setFromTriplets(entries.begin(), entries.end());
   return mass;
@@ -162,7 +238,7 @@ ContactSurface<dim>::mass_matrix(const Vector<double>& displacement) const
 
 template <int dim>
 std::vector<double>
-ContactSurface<dim>::consistent_pressures(const Vector<double>& displacement,
+ContactSurface<dim>::consistent_pressures(const std::vector<Point<dim>>& positions,
                                           const std::vector<unsigned int>& surface_nodes_of_pairs,
                                           const std::vector<double>& multipliers) const
 {
@@ -176,7 +252,7 @@ ContactSurface<dim>::consistent_pressures(const Vector<double>& displacement,
     return pressures;
 
   // The surface mass matrix restricted to the zone's nodes, kept sparse.
-  const Eigen::SparseMatrix<double> mass = mass_matrix(displacement);
+  const Eigen::SparseMatrix<double> mass = mass_matrix(positions);
   std::vector<int> zone_index(mass.rows(), -1); // surface node -> row in the zone, or -1
   Eigen::VectorXd zone_forces(zone.size());
   for (unsigned int i = 0; i < zone.size(); ++i)

@@ -89,17 +89,18 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
 {
   const std::vector<Node<dim>>& nodes_a = this->surface_a.nodes();
   const std::vector<Node<dim>>& nodes_b = this->surface_b.nodes();
-  const Vector<double> undeformed(this->surface_a.n_dofs());
-  const auto normals_a          = this->surface_a.normals(undeformed);
-  const auto normals_b          = this->surface_b.normals(undeformed);
-  const auto areas_a            = this->surface_a.lumped_areas(undeformed);
-  const auto areas_b            = this->surface_b.lumped_areas(undeformed);
-  const Tensor<1, dim> approach = approach_direction(nodes_a,
+  const auto undeformed_a               = this->surface_a.reference_positions();
+  const auto undeformed_b               = this->surface_b.reference_positions();
+  const auto normals_a                  = this->surface_a.normals(undeformed_a);
+  const auto normals_b                  = this->surface_b.normals(undeformed_b);
+  const auto areas_a                    = this->surface_a.lumped_areas(undeformed_a);
+  const auto areas_b                    = this->surface_b.lumped_areas(undeformed_b);
+  const Tensor<1, dim> approach         = approach_direction(nodes_a,
                                                      nodes_b,
                                                      mean_normal(normals_a, areas_a),
                                                      mean_normal(normals_b, areas_b),
                                                      touching_tolerance);
-  const auto across_offset      = [&approach](const Tensor<1, dim>& offset)
+  const auto across_offset              = [&approach](const Tensor<1, dim>& offset)
   { return (offset - (offset * approach) * approach).norm(); };
 
   unsigned int unmatched = 0;
@@ -138,7 +139,7 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
     throw InputError("no surface node of " + body_a + " faces " + body_b +
                      " (outward normal within 60 degrees of the approach direction): node-to-node "
                      "contact has no candidate pairs.");
-  const auto reference_normals = current_normals(undeformed);
+  const auto reference_normals = current_normals(undeformed_a, undeformed_b);
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
     candidate_pairs[k].normal = reference_normals[k];
   if (unmatched == 0)
@@ -157,10 +158,11 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
 
 template <int dim>
 std::vector<Tensor<1, dim>>
-NodeToNodeContact<dim>::current_normals(const Vector<double>& displacement) const
+NodeToNodeContact<dim>::current_normals(const std::vector<Point<dim>>& positions_a,
+                                        const std::vector<Point<dim>>& positions_b) const
 {
-  const auto normals_a = surface_a.normals(displacement);
-  const auto normals_b = surface_b.normals(displacement);
+  const auto normals_a = surface_a.normals(positions_a);
+  const auto normals_b = surface_b.normals(positions_b);
   std::vector<Tensor<1, dim>> pair_normals;
   for (const auto& [index_a, index_b] : surface_nodes_of_pair)
   {
@@ -172,21 +174,23 @@ NodeToNodeContact<dim>::current_normals(const Vector<double>& displacement) cons
 
 template <int dim>
 std::vector<double>
-NodeToNodeContact<dim>::contact_pressures(const Vector<double>& displacement,
+NodeToNodeContact<dim>::contact_pressures(const BorderDisplacement<dim>& displacement,
                                           const std::vector<double>& multipliers) const
 {
   AssertDimension(multipliers.size(), candidate_pairs.size());
   std::vector<unsigned int> nodes_a_of_pairs;
   for (const auto& nodes_of_pair : surface_nodes_of_pair)
     nodes_a_of_pairs.push_back(nodes_of_pair.first);
-  return surface_a.consistent_pressures(displacement, nodes_a_of_pairs, multipliers);
+  return surface_a.consistent_pressures(
+      surface_a.current_positions(displacement), nodes_a_of_pairs, multipliers);
 }
 
 template <int dim>
-void NodeToNodeContact<dim>::update_pairs(const Vector<double>& displacement,
+void NodeToNodeContact<dim>::update_pairs(const BorderDisplacement<dim>& displacement,
                                           std::vector<ContactPair<dim>>& pairs) const
 {
-  const auto normals = current_normals(displacement);
+  const auto normals = current_normals(surface_a.current_positions(displacement),
+                                       surface_b.current_positions(displacement));
   for (unsigned int k = 0; k < pairs.size(); ++k)
     pairs[k].normal = normals[k];
 }
@@ -197,6 +201,14 @@ std::vector<Node<dim>> NodeToNodeContact<dim>::coupled_nodes(const unsigned int 
   std::vector<Node<dim>> nodes;
   candidate_pairs[k].for_each_node([&nodes](const Node<dim>& node, double)
                                    { nodes.push_back(node); });
+  return nodes;
+}
+
+template <int dim>
+std::vector<Node<dim>> NodeToNodeContact<dim>::surface_nodes() const
+{
+  std::vector<Node<dim>> nodes = surface_a.nodes();
+  nodes.insert(nodes.end(), surface_b.nodes().begin(), surface_b.nodes().end());
   return nodes;
 }
 

@@ -14,16 +14,15 @@ namespace
 /// |n_s - sum_i N_i n_i| (at most 2) below which a slave node does not face the master surface.
 constexpr double least_averaged_normal = 1e-8;
 
-/** Face `face` of `surface` at `displacement`. */
+/** Face `face` of `surface` with its nodes at `positions` (one per node of the surface). */
 template <int dim>
 QuadraticFace<dim> current_face(const ContactSurface<dim>& surface,
                                 const unsigned int face,
-                                const Vector<double>& displacement)
+                                const std::vector<Point<dim>>& positions)
 {
   QuadraticFace<dim> curve;
   for (unsigned int i = 0; i < 3; ++i)
-    curve.points[i] =
-        current_position(surface.nodes()[surface.face_nodes()[face][i]], displacement);
+    curve.points[i] = positions[surface.face_nodes()[face][i]];
   return curve;
 }
 
@@ -66,18 +65,19 @@ std::optional<double> normal_ray_point(const QuadraticFace<dim>& face,
 }
 
 /**
- * Moves `pair`'s master point onto `faces` of `master_surface` at `displacement`: to where the
- * ray from the slave node along nbar(face, xi) = n_s - sum_i N_i(xi) n_i meets a face (the
- * nearest such point), else to the closest point of the faces; sets the pair's masters (the
- * face's nodes) and weights (N_i at the point) and returns nbar there. `master_normals`: the
- * master surface's nodal normals n_i at `displacement` (update_pairs(): the averaged normal of the
- * two surfaces, n_s the slave node's normal), or null for a ray along n_s alone
+ * Moves `pair`'s master point onto `faces` of `master_surface`, its nodes at `master_positions`:
+ * to where the ray from the slave node (at `slave_point`) along nbar(face, xi) = n_s - sum_i
+ * N_i(xi) n_i meets a face (the nearest such point), else to the closest point of the faces; sets
+ * the pair's masters (the face's nodes) and weights (N_i at the point) and returns nbar there.
+ * `master_normals`: the master surface's nodal normals n_i there (update_pairs(): the averaged
+ * normal of the two surfaces, n_s the slave node's normal), or null for a ray along n_s alone
  * (update_master_points(): n_s the pair's normal, kept).
  */
 template <int dim>
 Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
                                  const std::vector<unsigned int>& faces,
-                                 const Vector<double>& displacement,
+                                 const std::vector<Point<dim>>& master_positions,
+                                 const Point<dim>& slave_point,
                                  const Tensor<1, dim>& n_s,
                                  const std::vector<Tensor<1, dim>>* master_normals,
                                  ContactPair<dim>& pair)
@@ -90,13 +90,12 @@ Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
         normals[i] = (*master_normals)[master_surface.face_nodes()[face][i]];
     return normals;
   };
-  const Point<dim> slave_point = current_position(pair.slave, displacement);
-  unsigned int chosen_face     = faces.front();
+  unsigned int chosen_face = faces.front();
   double chosen_xi = 0., chosen_distance = std::numeric_limits<double>::max();
   bool on_ray = false;
   for (const unsigned int face : faces)
   {
-    const auto curve      = current_face(master_surface, face, displacement);
+    const auto curve      = current_face(master_surface, face, master_positions);
     const auto closest    = curve.closest_point(slave_point);
     const auto ray_xi     = normal_ray_point(curve, normals_of(face), slave_point, n_s, closest.xi);
     const double xi       = ray_xi ? *ray_xi : closest.xi;
@@ -124,22 +123,24 @@ Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
 }
 
 /**
- * Sets `pair`'s masters, weights and normal from `faces` of `master_surface` at `displacement`,
- * with the slave node's current normal `slave_normal` and the master surface's nodal normals
- * `master_normals` there: the master point is where the ray from the slave node along the
- * averaged normal meets a face (the nearest such point), else the closest point of the faces;
- * the normal is the averaged normal there. Throws SolverFailure if that vanishes.
+ * Sets `pair`'s masters, weights and normal from `faces` of `master_surface`, its nodes at
+ * `master_positions`, with the slave node at `slave_point`, its normal `slave_normal` and the
+ * master surface's nodal normals `master_normals` there: the master point is where the ray from the
+ * slave node along the averaged normal meets a face (the nearest such point), else the closest
+ * point of the faces; the normal is the averaged normal there. Throws SolverFailure if that
+ * vanishes.
  */
 template <int dim>
 void project_onto_faces(const ContactSurface<dim>& master_surface,
                         const std::vector<unsigned int>& faces,
-                        const Vector<double>& displacement,
+                        const std::vector<Point<dim>>& master_positions,
+                        const Point<dim>& slave_point,
                         const Tensor<1, dim>& slave_normal,
                         const std::vector<Tensor<1, dim>>& master_normals,
                         ContactPair<dim>& pair)
 {
-  const Tensor<1, dim> normal =
-      move_master_point(master_surface, faces, displacement, slave_normal, &master_normals, pair);
+  const Tensor<1, dim> normal = move_master_point(
+      master_surface, faces, master_positions, slave_point, slave_normal, &master_normals, pair);
   if (!(normal.norm() >= least_averaged_normal)) // also for NaN
   {
     std::ostringstream where;
@@ -165,16 +166,17 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
   for (const auto& face : master_faces)
     AssertThrow(face.size() == 3,
                 ExcMessage("node-to-segment contact needs Q2 faces in 2D (three nodes a face)"));
-  const Vector<double> undeformed(this->slave_surface.n_dofs());
-  const auto slave_areas    = this->slave_surface.lumped_areas(undeformed);
-  const auto slave_normals  = this->slave_surface.normals(undeformed);
-  const auto master_normals = this->master_surface.normals(undeformed);
+  const auto undeformed_slave  = this->slave_surface.reference_positions();
+  const auto undeformed_master = this->master_surface.reference_positions();
+  const auto slave_areas       = this->slave_surface.lumped_areas(undeformed_slave);
+  const auto slave_normals     = this->slave_surface.normals(undeformed_slave);
+  const auto master_normals    = this->master_surface.normals(undeformed_master);
 
   for (unsigned int i = 0; i < slave_nodes.size(); ++i)
   {
     std::vector<unsigned int> faces;
     for (unsigned int face = 0; face < master_faces.size(); ++face)
-      if (current_face(this->master_surface, face, undeformed)
+      if (current_face(this->master_surface, face, undeformed_master)
               .closest_point(slave_nodes[i].position)
               .distance <= search_radius)
         faces.push_back(face);
@@ -185,8 +187,13 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
     pair.penalty_stiffness = penalty_stiffness_per_area * slave_areas[i];
     try
     {
-      project_onto_faces(
-          this->master_surface, faces, undeformed, slave_normals[i], master_normals, pair);
+      project_onto_faces(this->master_surface,
+                         faces,
+                         undeformed_master,
+                         pair.slave.position,
+                         slave_normals[i],
+                         master_normals,
+                         pair);
     }
     catch (const SolverFailure& failure) // at the reference configuration: the input's fault
     {
@@ -214,28 +221,32 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
 }
 
 template <int dim>
-void NodeToSegmentContact<dim>::update_pairs(const Vector<double>& displacement,
+void NodeToSegmentContact<dim>::update_pairs(const BorderDisplacement<dim>& displacement,
                                              std::vector<ContactPair<dim>>& pairs) const
 {
-  const auto slave_normals  = slave_surface.normals(displacement);
-  const auto master_normals = master_surface.normals(displacement);
+  const auto master_positions = master_surface.current_positions(displacement);
+  const auto slave_normals  = slave_surface.normals(slave_surface.current_positions(displacement));
+  const auto master_normals = master_surface.normals(master_positions);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     project_onto_faces(master_surface,
                        candidate_faces_of_pair[k],
-                       displacement,
+                       master_positions,
+                       displacement.current_position(pairs[k].slave),
                        slave_normals[slave_node_of_pair[k]],
                        master_normals,
                        pairs[k]);
 }
 
 template <int dim>
-void NodeToSegmentContact<dim>::update_master_points(const Vector<double>& displacement,
+void NodeToSegmentContact<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
                                                      std::vector<ContactPair<dim>>& pairs) const
 {
+  const auto master_positions = master_surface.current_positions(displacement);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     move_master_point<dim>(master_surface,
                            candidate_faces_of_pair[k],
-                           displacement,
+                           master_positions,
+                           displacement.current_position(pairs[k].slave),
                            pairs[k].normal,
                            nullptr,
                            pairs[k]);
@@ -253,11 +264,20 @@ std::vector<Node<dim>> NodeToSegmentContact<dim>::coupled_nodes(const unsigned i
 
 template <int dim>
 std::vector<double>
-NodeToSegmentContact<dim>::contact_pressures(const Vector<double>& displacement,
+NodeToSegmentContact<dim>::contact_pressures(const BorderDisplacement<dim>& displacement,
                                              const std::vector<double>& multipliers) const
 {
   AssertDimension(multipliers.size(), candidate_pairs.size());
-  return slave_surface.consistent_pressures(displacement, slave_node_of_pair, multipliers);
+  return slave_surface.consistent_pressures(
+      slave_surface.current_positions(displacement), slave_node_of_pair, multipliers);
+}
+
+template <int dim>
+std::vector<Node<dim>> NodeToSegmentContact<dim>::surface_nodes() const
+{
+  std::vector<Node<dim>> nodes = slave_surface.nodes();
+  nodes.insert(nodes.end(), master_surface.nodes().begin(), master_surface.nodes().end());
+  return nodes;
 }
 
 // 2D only, the exception to base/dimensions.h: its face patch is a 3-node line.

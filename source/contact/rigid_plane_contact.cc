@@ -13,10 +13,10 @@ RigidPlaneContact<dim>::RigidPlaneContact(ContactSurface<dim> surface,
                                           const double touching_tolerance)
     : surface(std::move(surface))
 {
-  const Vector<double> undeformed(this->surface.n_dofs());
-  const auto normals = this->surface.normals(undeformed);
-  const auto areas   = this->surface.lumped_areas(undeformed);
-  const auto& nodes  = this->surface.nodes();
+  const auto undeformed = this->surface.reference_positions();
+  const auto normals    = this->surface.normals(undeformed);
+  const auto areas      = this->surface.lumped_areas(undeformed);
+  const auto& nodes     = this->surface.nodes();
   for (unsigned int i = 0; i < nodes.size(); ++i)
   {
     if (normals[i] * normal >= 0.)
@@ -53,10 +53,11 @@ std::vector<Node<dim>> RigidPlaneContact<dim>::coupled_nodes(const unsigned int 
 
 template <int dim>
 std::vector<double>
-RigidPlaneContact<dim>::contact_pressures(const Vector<double>& displacement,
+RigidPlaneContact<dim>::contact_pressures(const BorderDisplacement<dim>& displacement,
                                           const std::vector<double>& multipliers) const
 {
-  return surface.consistent_pressures(displacement, surface_node_of_pair, multipliers);
+  return surface.consistent_pressures(
+      surface.current_positions(displacement), surface_node_of_pair, multipliers);
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(RigidPlaneContact)

@@ -116,7 +116,7 @@ void integrate_one_cell(const CellData& cell,
                         const Material& material,
                         const Kinematics<dim>& kinematics,
                         const std::vector<unsigned int>& local_component,
-                        const Vector<double>& displacement,
+                        const DistributedVector& displacement,
                         const bool with_force,
                         const bool with_tangent,
                         const bool with_energy,
@@ -128,7 +128,7 @@ void integrate_one_cell(const CellData& cell,
   copy.energies.resize(cell.volumes.size());
   copy.failure.clear();
   for (unsigned int i = 0; i < n_local; ++i)
-    copy.nodal_values[i] = displacement[cell.dofs[i]];
+    copy.nodal_values[i] = displacement.local_element(cell.local_dofs[i]);
   try
   {
     for (unsigned int q = 0; q < cell.volumes.size(); ++q)
@@ -187,6 +187,7 @@ ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
     fe_values.reinit(cell);
     CellData data{cell->material_id(),
                   std::vector<types::global_dof_index>(n_local),
+                  {},
                   std::vector<Point<dim>>(n_q),
                   std::vector<double>(n_q),
                   std::vector<double>(n_q * n_local),
@@ -221,6 +222,9 @@ ElasticBodies<dim>::ElasticBodies(const DoFHandler<dim>& dof_handler,
       dof_handler.locally_owned_dofs(),
       cell_dofs,
       dof_handler.get_triangulation().get_communicator());
+  for (CellData& data : cells)
+    for (const types::global_dof_index dof : data.dofs)
+      data.local_dofs.push_back(force_layout->global_to_local(dof));
 
   constant_tangent =
       std::all_of(this->bodies.begin(),
@@ -363,19 +367,31 @@ double ElasticBodies<dim>::highest_frequency_bound(const std::vector<bool>& fixe
 }
 
 template <int dim>
-void ElasticBodies<dim>::assemble_internal_force(const Vector<double>& displacement,
+DistributedVector ElasticBodies<dim>::with_cell_ghosts(const DistributedVector& displacement) const
+{
+  DistributedVector ghosted(force_layout);
+  ghosted.copy_locally_owned_data_from(displacement);
+  ghosted.update_ghost_values();
+  return ghosted;
+}
+
+template <int dim>
+void ElasticBodies<dim>::assemble_internal_force(const DistributedVector& displacement,
                                                  DistributedVector& internal_force,
                                                  TrilinosWrappers::SparseMatrix* tangent,
                                                  double* strain_energy) const
 {
-  integrate(displacement, &internal_force, tangent, strain_energy);
+  integrate(with_cell_ghosts(displacement), &internal_force, tangent, strain_energy);
 }
 
 template <int dim>
-double ElasticBodies<dim>::strain_energy(const Vector<double>& displacement) const
+double ElasticBodies<dim>::strain_energy(const DistributedVector& displacement) const
 {
   double energy = 0.;
-  integrate(displacement, nullptr, static_cast<SparseMatrix<double>*>(nullptr), &energy);
+  integrate(with_cell_ghosts(displacement),
+            nullptr,
+            static_cast<SparseMatrix<double>*>(nullptr),
+            &energy);
   return energy;
 }
 
@@ -383,12 +399,12 @@ template <int dim>
 void ElasticBodies<dim>::add_constant_tangent(TrilinosWrappers::SparseMatrix& tangent) const
 {
   Assert(constant_tangent, ExcMessage("add_constant_tangent() is for linear bodies only"));
-  integrate(Vector<double>(dof_handler.n_dofs()), nullptr, &tangent, nullptr);
+  integrate(with_cell_ghosts(DistributedVector(force_layout)), nullptr, &tangent, nullptr);
 }
 
 template <int dim>
 template <typename MatrixType>
-void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
+void ElasticBodies<dim>::integrate(const DistributedVector& displacement,
                                    DistributedVector* internal_force,
                                    MatrixType* tangent,
                                    double* strain_energy) const
@@ -432,7 +448,7 @@ void ElasticBodies<dim>::integrate(const Vector<double>& displacement,
         *strain_energy += energy;
     if (internal_force != nullptr)
       for (unsigned int i = 0; i < n_local; ++i)
-        (*internal_force)[cell.dofs[i]] += copy.force[i];
+        internal_force->local_element(cell.local_dofs[i]) += copy.force[i];
     if (tangent != nullptr)
     {
       if (constraints != nullptr)

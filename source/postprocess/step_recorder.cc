@@ -123,7 +123,7 @@ void StepRecorder<dim>::record(const Step& step,
   // Contact pressures (surface contact only): one solve per step, skipped without contact.
   const std::vector<double> pressures =
       surface_contact && contact.n_active() > 0
-          ? contact.contact_pressures(gather_whole(state.displacement))
+          ? contact.contact_pressures(contact.border().gather(state.displacement))
           : std::vector<double>(contact.n_pairs(), 0.);
   if (dim > 1)
   {

@@ -126,7 +126,7 @@ void ContactProblem<dim>::set_initial_conditions()
       velocity[node.dofs[d]] = v0[d];
   }
   stepper->start(velocity, *discretization.bodies);
-  contact->update_geometry(gather_whole(stepper->state().displacement));
+  contact->update_geometry(contact->border().gather(stepper->state().displacement));
   impulses->start(stepper->state());
 }
 

@@ -31,8 +31,9 @@ struct ContactNewtonSolver<dim>::Iteration
   const typename DynamicResidual<dim>::Step step;
   DistributedVector increment;              ///< u - u~, this rank's owned DoFs
   DistributedVector restart_increment = {}; ///< u_n - u~, where Newton restarts (owned DoFs)
-  Vector<double> last_configuration   = {}; ///< u_n (whole), for alpha_f > 0 only
-  Vector<double> displacement         = {}; ///< u~ + increment, whole
+  Vector<double> last_configuration   = {}; ///< u_n on the contact border, for alpha_f > 0 only
+  DistributedVector displacement      = {}; ///< u~ + increment, owned DoFs
+  Vector<double> border_displacement  = {}; ///< u~ + increment on the contact border
   bool active_set_changed             = false;
   bool restarted                      = false;
   unsigned int linear_solves          = 0;
@@ -89,7 +90,7 @@ ContactNewtonSolver<dim>::solve(const DistributedVector& predictor,
   {
     DistributedVector configuration = iteration.restart_increment;
     configuration += predictor;
-    iteration.last_configuration = gather_whole(configuration);
+    iteration.last_configuration = contact.border().gather(configuration);
   }
   // A pair enters when the unconstrained predicted gap is negative.
   enter(iteration);
@@ -177,15 +178,15 @@ void ContactNewtonSolver<dim>::enter(Iteration& iteration)
   set_displacement(iteration);
   move_master_points(iteration);
   iteration.active_set_changed =
-      contact.update_active_set(iteration.displacement, gap_tolerance, 0.);
+      contact.update_active_set(iteration.border_displacement, gap_tolerance, 0.);
 }
 
 template <int dim>
 void ContactNewtonSolver<dim>::set_displacement(Iteration& iteration) const
 {
-  DistributedVector displacement = iteration.increment;
-  displacement += iteration.step.predictor; // u~ + increment: addition commutes
-  iteration.displacement = gather_whole(displacement);
+  iteration.displacement = iteration.increment;
+  iteration.displacement += iteration.step.predictor; // u~ + increment: addition commutes
+  iteration.border_displacement = contact.border().gather(iteration.displacement);
 }
 
 template <int dim>
@@ -193,10 +194,10 @@ void ContactNewtonSolver<dim>::move_master_points(const Iteration& iteration)
 {
   if (alpha_f == 0.)
   {
-    contact.update_master_points(iteration.displacement);
+    contact.update_master_points(iteration.border_displacement);
     return;
   }
-  Vector<double> configuration = iteration.displacement;
+  Vector<double> configuration = iteration.border_displacement;
   configuration.sadd(1. - alpha_f, alpha_f, iteration.last_configuration);
   contact.update_master_points(configuration);
 }
@@ -211,6 +212,7 @@ ContactNewtonSolver<dim>::evaluate(const Iteration& iteration, const bool with_t
     evaluation.figures = residual.evaluate(iteration.step,
                                            iteration.increment,
                                            iteration.displacement,
+                                           iteration.border_displacement,
                                            with_tangent ? &system : nullptr);
   }
   catch (const SolverFailure& failure)
@@ -325,8 +327,10 @@ void ContactNewtonSolver<dim>::move_along_update(Iteration& iteration, const dou
   multiplier_increment *= length;
   contact.add_multiplier_increment(multiplier_increment);
   move_master_points(iteration);
-  iteration.active_set_changed = contact.update_active_set(
-      iteration.displacement, gap_tolerance, parameters.residual_tolerance * reference_force);
+  iteration.active_set_changed =
+      contact.update_active_set(iteration.border_displacement,
+                                gap_tolerance,
+                                parameters.residual_tolerance * reference_force);
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(ContactNewtonSolver)

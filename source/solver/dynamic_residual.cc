@@ -23,10 +23,11 @@ template <int dim>
 typename DynamicResidual<dim>::Figures
 DynamicResidual<dim>::evaluate(const Step& step,
                                const DistributedVector& increment,
-                               const Vector<double>& displacement,
+                               const DistributedVector& displacement,
+                               const Vector<double>& border_displacement,
                                SaddlePointSystem<dim>* tangent)
 {
-  assemble(step, increment, displacement, tangent);
+  assemble(step, increment, displacement, border_displacement, tangent);
   return residual_and_figures(step, displacement);
 }
 
@@ -44,7 +45,8 @@ void DynamicResidual<dim>::keep_constant_tangent(SaddlePointSystem<dim>& tangent
 template <int dim>
 void DynamicResidual<dim>::assemble(const Step& step,
                                     const DistributedVector& increment,
-                                    const Vector<double>& displacement,
+                                    const DistributedVector& displacement,
+                                    const Vector<double>& border_displacement,
                                     SaddlePointSystem<dim>* tangent)
 {
   // The diagonal of an inactive pair's trivial row lambda = 0:
@@ -85,7 +87,7 @@ void DynamicResidual<dim>::assemble(const Step& step,
   contact.add_contact_forces(border_force);
   contact_force.reinit(internal_force_values);
   border.scatter_add(border_force, contact_force);
-  contact.assemble_constraint_rows(border.gather(displacement),
+  contact.assemble_constraint_rows(border_displacement,
                                    inactive_diagonal,
                                    tangent != nullptr ? tangent->multiplier_rows() : nullptr,
                                    constraint_residual);
@@ -98,7 +100,7 @@ void DynamicResidual<dim>::assemble(const Step& step,
 
 template <int dim>
 typename DynamicResidual<dim>::Figures
-DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double>& displacement)
+DynamicResidual<dim>::residual_and_figures(const Step& step, const DistributedVector& displacement)
 {
   force_residual.reinit(internal_force_values, /*omit_zeroing_entries=*/true);
   double force_residual_squared = 0.;
@@ -123,13 +125,13 @@ DynamicResidual<dim>::residual_and_figures(const Step& step, const Vector<double
   // the terms that cancel in K u and c M u (a rigid translation has Q = 0 up to round-off
   // of the size eps max diag(K_eff) |u|), which no tolerance can go under.
   // Collective norms, one statement each: the same order on every rank.
-  const double internal_norm = internal_force_values.l2_norm();
-  const double external_norm = step.external_force.l2_norm();
-  const double contact_norm  = contact_force.l2_norm();
-  figures.reference_force    = internal_norm + external_norm + contact_norm;
-  const double inertia_norm  = inertia_force.l2_norm();
-  figures.round_off_floor =
-      roundoff_factor * (scales.largest_row_sum * displacement.l2_norm() + inertia_norm);
+  const double internal_norm   = internal_force_values.l2_norm();
+  const double external_norm   = step.external_force.l2_norm();
+  const double contact_norm    = contact_force.l2_norm();
+  figures.reference_force      = internal_norm + external_norm + contact_norm;
+  const double inertia_norm    = inertia_force.l2_norm();
+  const double u_norm          = displacement.l2_norm();
+  figures.round_off_floor      = roundoff_factor * (scales.largest_row_sum * u_norm + inertia_norm);
   figures.force_residual       = std::sqrt(force_residual_squared);
   const MultiplierBlock& block = contact.multiplier_block();
   for (unsigned int k = 0; k < block.n_pairs(); ++k)

@@ -25,8 +25,7 @@ void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
   current.reinit(solver.dof_layout());
   copy_owned_entries(initial_velocity, current.velocity);
   DistributedVector internal_force;
-  bodies.assemble_internal_force(
-      Vector<double>(mass.size()), internal_force, nullptr); // Q(u_0 = 0)
+  bodies.assemble_internal_force(current.displacement, internal_force, nullptr); // Q(u_0 = 0)
   current.internal_force.copy_locally_owned_data_from(internal_force);
   copy_owned_entries(loads.force(0.), current.external_force);
   for_each_owned_row(current.velocity,
@@ -50,7 +49,7 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
 {
   // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
   // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
-  contact.update_geometry(gather_whole(before.displacement));
+  contact.update_geometry(contact.border().gather(before.displacement));
   increment.reinit(before.displacement);
   integrator.predict(before.displacement, before.velocity, before.acceleration, predictor);
   // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).

@@ -84,7 +84,7 @@ TEST(ContactConstraints, RowsAreMinusTheGapGradient)
   { return contact.gap(k, border.gather(volume)); };
   ASSERT_LT(gap(0, u), 0.);
   ASSERT_LT(gap(1, u), 0.);
-  contact.update_active_set(u, 1e-12, 0.);
+  contact.update_active_set(contact.border().gather(u), 1e-12, 0.);
   ASSERT_TRUE(contact.is_active(0) && contact.is_active(1));
 
   std::vector<bool> coupled(n_dofs + 2, false);
@@ -129,7 +129,7 @@ TEST(ContactBorder, ContactForcesScatterToTheVolumeNodesOfThePairs)
       ContactFormulation::lagrange_multiplier);
   Vector<double> penetrating(10);
   penetrating[9] = 2.; // the wall pair penetrates at rest
-  contact.update_active_set(penetrating, 1e-12, 0.);
+  contact.update_active_set(contact.border().gather(penetrating), 1e-12, 0.);
   Vector<double> multipliers(2);
   multipliers[0] = 2., multipliers[1] = 3.;
   contact.add_multiplier_increment(multipliers);
@@ -178,7 +178,7 @@ TEST(ContactConstraints, ActiveSetEntersOnPenetrationAndLeavesOnTension)
   u[1] = -1e-3; // pair 0 open
   u[5] = 1e-3;  // pair 2 penetrates: enters, then turns tensile below
   u[7] = 1e-3;  // pair 3 penetrates: enters, stays compressive
-  EXPECT_TRUE(contact.update_active_set(u, 1e-6, 0.));
+  EXPECT_TRUE(contact.update_active_set(contact.border().gather(u), 1e-6, 0.));
   EXPECT_FALSE(contact.is_active(0));
   EXPECT_TRUE(contact.is_active(1) && contact.is_active(2) && contact.is_active(3));
 
@@ -188,13 +188,13 @@ TEST(ContactConstraints, ActiveSetEntersOnPenetrationAndLeavesOnTension)
   multipliers[3] = -1e-7; // tensile within the tolerance: stays
   contact.add_multiplier_increment(multipliers);
   Vector<double> closed(8); // all gaps zero now
-  EXPECT_TRUE(contact.update_active_set(closed, 1e-6, 1e-6));
+  EXPECT_TRUE(contact.update_active_set(contact.border().gather(closed), 1e-6, 1e-6));
   EXPECT_FALSE(contact.is_active(0));
   EXPECT_TRUE(contact.is_active(1));
   EXPECT_FALSE(contact.is_active(2));
   EXPECT_EQ(contact.pair_force(2), 0.); // a released pair carries no force
   EXPECT_TRUE(contact.is_active(3));
-  EXPECT_FALSE(contact.update_active_set(closed, 1e-6, 1e-6));
+  EXPECT_FALSE(contact.update_active_set(contact.border().gather(closed), 1e-6, 1e-6));
 }
 // The event work of a step (ContactFields::event_work()): (1/2) F_{n+1} g(u_n) for a pair that
 // closed and (1/2) F_n g(u_{n+1}) for one that opened, nothing for a pair that stayed closed or
@@ -218,7 +218,7 @@ TEST(ContactFields, EventWorkIsHalfTheForceTimesTheGapTheEventCrosses)
   new_u[3] = -0.01;
   Vector<double> penetrating(6);
   penetrating[3] = -0.01, penetrating[1] = 1e-3, penetrating[5] = 1e-3;
-  contact.update_active_set(penetrating, 1e-6, 0.);
+  contact.update_active_set(contact.border().gather(penetrating), 1e-6, 0.);
   Vector<double> multipliers(3);
   multipliers[0] = 3., multipliers[2] = 5.;
   contact.add_multiplier_increment(multipliers);

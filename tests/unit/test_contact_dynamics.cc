@@ -69,7 +69,7 @@ struct TwoMassStep
     Vector<double> penetrating(2 * dim);
     for (unsigned int d = 0; d < dim; ++d)
       penetrating[d] = 0.2 * normal[d];
-    contact->update_active_set(penetrating, 1e-12, 0.);
+    contact->update_active_set(contact->border().gather(penetrating), 1e-12, 0.);
     for (unsigned int i = 0; i < 2 * dim; ++i)
     {
       increment[i] = new_u[i] - rates.predicted_displacement(old_u[i], old_v[i], old_a[i]);
@@ -335,7 +335,8 @@ TEST(ContactDynamics, PersistencyTurnsThePairsPredictedToCloseIntoGapRateConstra
     const bool closing = approach_speed > 0.;
     EXPECT_DOUBLE_EQ(reference[0], closing ? 0.01 : 0.) << approach_speed;
     contact.set_reference_gaps(reference);
-    EXPECT_EQ(contact.update_active_set(halfway, 1e-12, 0.), closing) << approach_speed;
+    EXPECT_EQ(contact.update_active_set(contact.border().gather(halfway), 1e-12, 0.), closing)
+        << approach_speed;
     contact.assemble_constraint_rows(halfway, 1., nullptr, residual);
     if (closing)
     {
@@ -399,7 +400,7 @@ TEST(ContactDynamics, TaylorPapadopoulosClosesPairsSharingAMasterFace)
   for (unsigned int k = 0; k < 2; ++k)
     for (unsigned int d = 0; d < 2; ++d)
       penetrating[2 * (3 + k) + d] += 0.2 * normals[k][d];
-  contact.update_active_set(penetrating, 1e-12, 0.);
+  contact.update_active_set(contact.border().gather(penetrating), 1e-12, 0.);
   ASSERT_TRUE(contact.is_active(0) && contact.is_active(1));
   for (unsigned int k = 0; k < 2; ++k)
     ASSERT_NEAR(contact.gap(k, new_u), 0., 1e-15);

@@ -41,10 +41,12 @@ TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
   const auto& pairs = contact.surfaces->pairs();
   ASSERT_GE(pairs.size(), 20u);
 
+  const ContactBorder<2> border(contact.surfaces->surface_nodes());
   const auto moved_to = [&](const Vector<double>& displacement)
   {
-    std::vector<ContactPair<2>> moved = pairs;
-    contact.surfaces->update_pairs(displacement, moved);
+    std::vector<ContactPair<2>> moved        = pairs;
+    const Vector<double> border_displacement = border.gather(displacement);
+    contact.surfaces->update_pairs(BorderDisplacement<2>{border, border_displacement}, moved);
     return moved;
   };
   unsigned int off_axis = 0;

@@ -172,6 +172,14 @@ std::unique_ptr<Kinematics<2>> make_plane_kinematics(const std::string& name)
   return std::make_unique<PlaneStrainKinematics>();
 }
 
+/// `whole` as the owned vector of a run on one rank.
+dyncontact::DistributedVector on_one_rank(const Vector<double>& whole)
+{
+  dyncontact::DistributedVector owned(whole.size());
+  std::copy(whole.begin(), whole.end(), owned.begin());
+  return owned;
+}
+
 /// Q(u) and, freshly zeroed and compressed, the tangent dQ/du at u.
 template <int dim>
 Vector<double> internal_force_and_tangent(const ElasticBodies<dim>& bodies,
@@ -180,7 +188,7 @@ Vector<double> internal_force_and_tangent(const ElasticBodies<dim>& bodies,
 {
   dyncontact::DistributedVector internal_force;
   tangent = 0.;
-  bodies.assemble_internal_force(displacement, internal_force, &tangent);
+  bodies.assemble_internal_force(on_one_rank(displacement), internal_force, &tangent);
   tangent.compress(VectorOperation::add);
   return dyncontact::gather_whole(internal_force);
 }
@@ -189,7 +197,7 @@ template <int dim>
 Vector<double> internal_force(const ElasticBodies<dim>& bodies, const Vector<double>& displacement)
 {
   dyncontact::DistributedVector force;
-  bodies.assemble_internal_force(displacement, force, nullptr);
+  bodies.assemble_internal_force(on_one_rank(displacement), force, nullptr);
   return dyncontact::gather_whole(force);
 }
 

@@ -107,7 +107,9 @@ std::vector<ContactPair<2>> moved_to(const ContactGeometry<2>& geometry,
                                      const Vector<double>& displacement)
 {
   std::vector<ContactPair<2>> pairs = geometry.pairs();
-  geometry.update_pairs(displacement, pairs);
+  const ContactBorder<2> border(geometry.surface_nodes());
+  const Vector<double> border_displacement = border.gather(displacement);
+  geometry.update_pairs(BorderDisplacement<2>{border, border_displacement}, pairs);
   return pairs;
 }
 
@@ -289,12 +291,15 @@ TEST(ContactSurface, NormalsAndMassMatrixAreThoseOfTheCurvedFaces)
       }
     }
     ASSERT_GT(nodes.size(), 10u);
-    const std::vector<Tensor<1, 2>> computed = surface.normals(u);
+    std::vector<Point<2>> positions;
+    for (const Node<2>& node : nodes)
+      positions.push_back(current_position(node, u));
+    const std::vector<Tensor<1, 2>> computed = surface.normals(positions);
     for (unsigned int node = 0; node < nodes.size(); ++node)
       for (unsigned int d = 0; d < 2; ++d)
         EXPECT_NEAR(computed[node][d], normals[node][d] / normals[node].norm(), 1e-12)
             << "body " << body << ", node at " << nodes[node].position;
-    const Eigen::MatrixXd computed_mass = Eigen::MatrixXd(surface.mass_matrix(u));
+    const Eigen::MatrixXd computed_mass = Eigen::MatrixXd(surface.mass_matrix(positions));
     EXPECT_LE((computed_mass - mass).cwiseAbs().maxCoeff(), 1e-12 * mass.cwiseAbs().maxCoeff())
         << "body " << body;
   }

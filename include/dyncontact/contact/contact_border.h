@@ -11,7 +11,9 @@
 namespace dyncontact
 {
 /**
- * The contact border: every node a contact pair may couple (the contact nodes), numbered
+ * The contact border: every node a contact pair may couple and every node whose position the
+ * contact geometry reads (its surfaces' nodes, ContactGeometry::surface_nodes()): the contact
+ * nodes, numbered
  * 0 .. n_nodes() - 1 in the order of their first DoF in the volume (the DoFHandler's numbering),
  * and the vectors over them. A border vector holds dim entries per contact node, entry
  * dim i + d for component d of node i (the border DoFs); a volume vector is a vector over the
@@ -92,5 +94,30 @@ public:
 private:
   std::vector<Node<dim>> volume_nodes; ///< sorted by first DoF
   std::vector<Node<dim>> border_nodes; ///< the same nodes with border DoFs
+};
+
+/**
+ * A displacement of the contact nodes: a border vector (`values`, dim entries per contact node)
+ * with the border it lives on, both referenced. What the contact geometry reads instead of a
+ * volume vector, so that it needs no more than the contact nodes on any rank.
+ */
+template <int dim>
+struct BorderDisplacement
+{
+  const ContactBorder<dim>& border;
+  const Vector<double>& values;
+
+  /**
+   * X + u of the volume node `node` (volume numbering, X its own position): u from the contact
+   * node that stands for it. Throws std::out_of_range if it is not a contact node.
+   */
+  Point<dim> current_position(const Node<dim>& node) const
+  {
+    Point<dim> position           = node.position;
+    const Node<dim>& contact_node = border.node(border.index(node));
+    for (unsigned int d = 0; d < dim; ++d)
+      position[d] += values[contact_node.dofs[d]];
+    return position;
+  }
 };
 } // namespace dyncontact

@@ -22,9 +22,11 @@ namespace dyncontact
  *
  * The pairs live on the contact border (ContactBorder, border()): their nodes are the border's
  * nodes, whose DoFs index border vectors, and every pair-level query (gap(), the contact forces,
- * the constraint rows) takes border vectors. The configuration updates (update_geometry(),
- * update_master_points(), update_active_set(), contact_pressures()) take the volume displacement,
- * which the contact geometry's surfaces are evaluated at.
+ * the constraint rows) takes border vectors, and so do the configuration updates
+ * (update_geometry(), update_master_points(), update_active_set(), contact_pressures()): the
+ * border also holds every node of the contact geometry's surfaces, which those read. The caller
+ * gathers the border displacement from its volume vector (ContactBorder::gather(), collective for
+ * a distributed one) once per configuration.
  *
  * Every candidate owns its multipliers (multiplier_block(): one per pair, the normal constraint),
  * so the sparsity pattern never changes; an inactive pair gets the trivial row lambda = 0. The
@@ -55,20 +57,21 @@ public:
 
   /**
    * The pairs of `geometry`, which follow the current configuration (update_geometry()); the
-   * border is every node a pair may couple (ContactGeometry::coupled_nodes()). The geometry must
+   * border is every node a pair may couple (ContactGeometry::coupled_nodes()) and every node of
+   * the geometry's surfaces (ContactGeometry::surface_nodes()). The geometry must
    * have at least one pair and finite normals (its constructor's InputError sees to it;
    * AssertThrow otherwise).
    */
   ContactConstraints(const ContactGeometry<dim>& geometry, ContactFormulation formulation);
 
   /**
-   * For pairs of a ContactGeometry: moves every pair to `displacement` (a volume vector;
+   * For pairs of a ContactGeometry: moves every pair to `displacement` (a border vector;
    * ContactGeometry::update_pairs()). Does nothing for fixed pairs.
    */
   void update_geometry(const Vector<double>& displacement);
 
   /**
-   * For pairs of a ContactGeometry: moves every pair's master point to `displacement` (a volume
+   * For pairs of a ContactGeometry: moves every pair's master point to `displacement` (a border
    * vector), its normal kept (ContactGeometry::update_master_points(); the Newton solver calls it
    * at every iterate). Does nothing for fixed pairs.
    */
@@ -142,7 +145,10 @@ public:
             f(block.index(k, c), contact_border.volume_node(node).dofs[d]);
   }
 
-  /** The volume DoFs of the contact nodes (for_each_coupling()), as `n_dofs` flags. */
+  /**
+   * The volume DoFs the pairs couple to (for_each_coupling()), as `n_dofs` flags: not the border's
+   * surface nodes that no pair couples to.
+   */
   std::vector<bool> contact_dofs(types::global_dof_index n_dofs) const;
 
   /** Adds the contact forces G^T lambda on the bodies to the border vector `force`. */
@@ -166,7 +172,7 @@ public:
   void add_multiplier_increment(const Vector<double>& increment);
 
   /**
-   * Updates the active set at the volume displacement u: inactive pairs with g < -gap_tolerance
+   * Updates the active set at the border displacement u: inactive pairs with g < -gap_tolerance
    * enter, active pairs with lambda < -force_tolerance leave (their multiplier is reset to zero),
    * except, for surface pairs with Lagrange multipliers, those whose contact pressure
    * (contact_pressures()) is still compressive: a node whose consistent share of a compressive
@@ -189,7 +195,7 @@ public:
 
   /**
    * The contact pressure at every pair [force/area] (see ContactGeometry::contact_pressures()) at
-   * the volume displacement `displacement` from the pair forces (pair_force()); empty for pairs
+   * the border displacement `displacement` from the pair forces (pair_force()); empty for pairs
    * with fixed normals.
    */
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
@@ -198,8 +204,12 @@ private:
   /** g_k(u) - reference_k: what the solve constrains (see set_reference_gaps()). */
   double constraint_gap(unsigned int pair, const Vector<double>& displacement) const;
 
-  /** Builds the border from `nodes_of_pairs` (per pair, volume nodes) and the border pairs. */
-  void build_border(const std::vector<std::vector<Node<dim>>>& nodes_of_pairs);
+  /**
+   * Builds the border from `nodes_of_pairs` (per pair, volume nodes) and `surface_nodes` (the
+   * geometry's, volume nodes), and the border pairs.
+   */
+  void build_border(const std::vector<std::vector<Node<dim>>>& nodes_of_pairs,
+                    const std::vector<Node<dim>>& surface_nodes = {});
 
   /** `pairs` = `volume_pairs` with their nodes on the border. */
   void move_pairs_to_border();

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_border.h>
 #include <dyncontact/contact/contact_pair.h>
 
 #include <deal.II/lac/vector.h>
@@ -25,7 +26,9 @@ namespace dyncontact
  * The number of pairs and each pair's slave node never change; the master nodes, weights and
  * normal may (update_pairs()), within the nodes coupled_nodes() declares, from which the contact
  * border and the sparsity pattern of the saddle-point system are built once. Its pairs' nodes
- * carry the volume (DoFHandler) numbering.
+ * carry the volume (DoFHandler) numbering. It reads the configuration from the displacement of
+ * the contact nodes only (BorderDisplacement over a border that holds surface_nodes()), never
+ * from a volume vector.
  */
 template <int dim>
 class ContactGeometry
@@ -38,11 +41,11 @@ public:
 
   /**
    * Moves every pair of `pairs` (as given by pairs(), same order) to the configuration
-   * `displacement` (a whole vector in the DoFHandler's numbering): its normal and, where the
+   * `displacement` (of a border holding surface_nodes()): its normal and, where the
    * geometry allows it, its master nodes and weights. Slave nodes, wall points and penalty
    * stiffnesses are left as they are.
    */
-  virtual void update_pairs(const Vector<double>& displacement,
+  virtual void update_pairs(const BorderDisplacement<dim>& displacement,
                             std::vector<ContactPair<dim>>& pairs) const = 0;
 
   /**
@@ -53,7 +56,7 @@ public:
    * they are: right where the master point is a material point (node-to-node: the facing node) or
    * fixed (a rigid plane).
    */
-  virtual void update_master_points(const Vector<double>& /*displacement*/,
+  virtual void update_master_points(const BorderDisplacement<dim>& /*displacement*/,
                                     std::vector<ContactPair<dim>>& /*pairs*/) const
   {
   }
@@ -66,11 +69,17 @@ public:
   virtual std::vector<Node<dim>> coupled_nodes(unsigned int k) const = 0;
 
   /**
+   * Every node whose position the geometry reads (the nodes of its surfaces; repeats allowed), in
+   * the volume numbering: with the coupled nodes, the contact border.
+   */
+  virtual std::vector<Node<dim>> surface_nodes() const = 0;
+
+  /**
    * The contact pressure [force/area] at every pair's slave node, consistent with the nodal
    * forces `multipliers` (one per pair, zero for inactive pairs) at `displacement`: exactly 0 for
    * an open pair.
    */
-  virtual std::vector<double> contact_pressures(const Vector<double>& displacement,
+  virtual std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
                                                 const std::vector<double>& multipliers) const = 0;
 };
 

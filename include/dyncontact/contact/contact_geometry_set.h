@@ -21,12 +21,13 @@ public:
   explicit ContactGeometrySet(std::vector<std::unique_ptr<ContactGeometry<dim>>> members);
 
   const std::vector<ContactPair<dim>>& pairs() const override { return all_pairs; }
-  void update_pairs(const Vector<double>& displacement,
+  void update_pairs(const BorderDisplacement<dim>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
-  void update_master_points(const Vector<double>& displacement,
+  void update_master_points(const BorderDisplacement<dim>& displacement,
                             std::vector<ContactPair<dim>>& pairs) const override;
   std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
-  std::vector<double> contact_pressures(const Vector<double>& displacement,
+  std::vector<Node<dim>> surface_nodes() const override;
+  std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
                                         const std::vector<double>& multipliers) const override;
 
 private:

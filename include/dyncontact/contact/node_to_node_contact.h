@@ -73,24 +73,28 @@ public:
   const std::vector<ContactPair<dim>>& pairs() const override { return candidate_pairs; }
 
   /** Sets each pair's normal to current_normals(displacement); the partners never change. */
-  void update_pairs(const Vector<double>& displacement,
+  void update_pairs(const BorderDisplacement<dim>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
 
   /** The pair's two nodes. */
   std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
 
+  /** The nodes of both surfaces. */
+  std::vector<Node<dim>> surface_nodes() const override;
+
   /**
-   * The current normal of every pair, in the order of pairs(), at `displacement` (a whole vector
-   * in the DoFHandler's numbering).
+   * The current normal of every pair, in the order of pairs(), with the nodes of surface A at
+   * `positions_a` and those of B at `positions_b` (ContactSurface::current_positions()).
    */
-  std::vector<Tensor<1, dim>> current_normals(const Vector<double>& displacement) const;
+  std::vector<Tensor<1, dim>> current_normals(const std::vector<Point<dim>>& positions_a,
+                                              const std::vector<Point<dim>>& positions_b) const;
 
   /**
    * The contact pressure at every pair's node of surface A, consistent with the nodal forces
    * `multipliers` (one per pair, zero for inactive pairs): ContactSurface::consistent_pressures()
    * of surface A at `displacement`. Open pairs (zero multiplier) carry exactly 0.
    */
-  std::vector<double> contact_pressures(const Vector<double>& displacement,
+  std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
                                         const std::vector<double>& multipliers) const override;
 
 private:

@@ -80,10 +80,10 @@ public:
 
   /**
    * Sets each pair's masters, weights and normal by projecting its slave node onto its candidate
-   * faces at `displacement` (a whole vector in the DoFHandler's numbering). Throws SolverFailure
+   * faces at `displacement`. Throws SolverFailure
    * if a pair's averaged normal vanishes there (a step that deformed the surfaces that far).
    */
-  void update_pairs(const Vector<double>& displacement,
+  void update_pairs(const BorderDisplacement<dim>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
 
   /**
@@ -92,14 +92,17 @@ public:
    * point of the faces): within a time step the gap n . (x(xi) - x_s) is then measured to the
    * master face, not to a material point of it.
    */
-  void update_master_points(const Vector<double>& displacement,
+  void update_master_points(const BorderDisplacement<dim>& displacement,
                             std::vector<ContactPair<dim>>& pairs) const override;
 
   /** The slave node and every node of the pair's candidate faces. */
   std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
 
+  /** The nodes of both surfaces. */
+  std::vector<Node<dim>> surface_nodes() const override;
+
   /** ContactSurface::consistent_pressures() of the slave surface at the pairs' slave nodes. */
-  std::vector<double> contact_pressures(const Vector<double>& displacement,
+  std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
                                         const std::vector<double>& multipliers) const override;
 
 private:

@@ -31,9 +31,13 @@ public:
 
   const std::vector<ContactPair<dim>>& pairs() const override { return candidate_pairs; }
   /** Nothing moves: the plane is fixed and its normal is the pairs' normal. */
-  void update_pairs(const Vector<double>&, std::vector<ContactPair<dim>>&) const override {}
+  void update_pairs(const BorderDisplacement<dim>&, std::vector<ContactPair<dim>>&) const override
+  {
+  }
   std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
-  std::vector<double> contact_pressures(const Vector<double>& displacement,
+  /** The surface's nodes. */
+  std::vector<Node<dim>> surface_nodes() const override { return surface.nodes(); }
+  std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
                                         const std::vector<double>& multipliers) const override;
 
 private:

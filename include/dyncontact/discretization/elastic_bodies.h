@@ -89,14 +89,14 @@ public:
   Vector<double> lumped_mass(const std::vector<bool>& massless_dofs = {}) const;
 
   /**
-   * Internal force Q(u) at `displacement` (n_dofs entries, whole; the entries at this rank's
-   * cells' DoFs are read) into `internal_force` (reinitialized: the rank's owned DoFs, the sums
-   * over all ranks' cells; collective) and, if `tangent` is not null, dQ/du
-   * added into its leading n_dofs x n_dofs block (the caller zeroes it; linear bodies are better
-   * served by add_constant_tangent() once), and, if `strain_energy` is not null, the strain energy
-   * from the same pass.
+   * Internal force Q(u) at `displacement` (this rank's owned DoFs; the other DoFs of its cells
+   * are fetched from their owners) into `internal_force` (reinitialized: the rank's owned DoFs, the
+   * sums over all ranks' cells; collective) and, if `tangent` is not null, dQ/du added into its
+   * leading n_dofs x n_dofs block (the caller zeroes it; linear bodies are better served by
+   * add_constant_tangent() once), and, if `strain_energy` is not null, the strain energy from the
+   * same pass.
    */
-  void assemble_internal_force(const Vector<double>& displacement,
+  void assemble_internal_force(const DistributedVector& displacement,
                                DistributedVector& internal_force,
                                TrilinosWrappers::SparseMatrix* tangent,
                                double* strain_energy = nullptr) const;
@@ -111,8 +111,11 @@ public:
    */
   void add_constant_tangent(TrilinosWrappers::SparseMatrix& tangent) const;
 
-  /** Total strain energy, the integral of W(F) over all bodies. */
-  double strain_energy(const Vector<double>& displacement) const;
+  /**
+   * Total strain energy, the integral of W(F) over all bodies, at `displacement` (this rank's
+   * owned DoFs). Collective.
+   */
+  double strain_energy(const DistributedVector& displacement) const;
 
   /**
    * An upper bound [1/time] of the highest angular frequency of the undeformed bodies (the
@@ -144,7 +147,7 @@ private:
    * is a TrilinosWrappers::SparseMatrix or (for K of linear bodies) a SparseMatrix<double>.
    */
   template <typename MatrixType>
-  void integrate(const Vector<double>& displacement,
+  void integrate(const DistributedVector& displacement,
                  DistributedVector* internal_force,
                  MatrixType* tangent,
                  double* strain_energy) const;
@@ -154,6 +157,8 @@ private:
   {
     types::material_id body;
     std::vector<types::global_dof_index> dofs;
+    /** The same DoFs' local indices in force_layout (owned, then ghosts). */
+    std::vector<unsigned int> local_dofs;
     /** Per quadrature point q: X_q, dV_q; shape value, gradient and delta F of local DoF i at
      *  index q * n_local + i. */
     std::vector<Point<dim>> points;
@@ -177,6 +182,10 @@ private:
    * cells (their contributions are sent to the owners).
    */
   std::shared_ptr<const Utilities::MPI::Partitioner> force_layout;
+
+  /** `displacement` (owned DoFs) in force_layout, its ghosts updated (collective). */
+  DistributedVector with_cell_ghosts(const DistributedVector& displacement) const;
+
   /** Every body's material is linear: dQ/du = K is constant (has_constant_tangent()). */
   bool constant_tangent;
 };

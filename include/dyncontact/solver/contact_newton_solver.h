@@ -54,9 +54,9 @@ namespace dyncontact
  *
  * Vectors passed in and out hold each rank's owned DoFs (DistributedVector, the layout of
  * dof_layout()), and so do the increments, the Newton update and the residual's force vectors
- * inside; the displacement of an iterate is gathered whole once per update for the contact layer
- * (the parallel layout of the matrix and the direct solver are SaddlePointSystem's). solve() is
- * collective.
+ * inside; the contact layer reads an iterate's displacement on the contact border, gathered once
+ * per update (the parallel layout of the matrix and the direct solver are SaddlePointSystem's).
+ * solve() is collective.
  *
  * The class is the Newton driver of three units: a SaddlePointSystem (the matrix, its fixed
  * sparsity pattern and the direct solve), a DynamicResidual (the residual, the tangent and the
@@ -169,7 +169,10 @@ private:
    */
   void enter(Iteration& iteration);
 
-  /** The iterate's displacement: the predictor plus the increment gathered whole (collective). */
+  /**
+   * The iterate's displacement, the predictor plus the increment, and its entries on the contact
+   * border (collective).
+   */
   void set_displacement(Iteration& iteration) const;
 
   /** Moves the pairs' master points to the iterate's (1 - alpha_f) u + alpha_f u_n. */

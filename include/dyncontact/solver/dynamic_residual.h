@@ -97,8 +97,9 @@ public:
   void keep_constant_tangent(SaddlePointSystem<dim>& tangent) const;
 
   /**
-   * Evaluates the residual at `displacement` = step.predictor + `increment` (n_dofs entries:
-   * the displacement whole, the increment this rank's owned DoFs) with the multipliers and active
+   * Evaluates the residual at `displacement` = step.predictor + `increment` (both this rank's
+   * owned DoFs; `border_displacement` its entries on the contact border) with the multipliers and
+   * active
    * set the contact layer holds, and, if `tangent` is not null, assembles the tangent into it (from
    * its constant part, keep_constant_tangent(), or from zero) and records its scales
    * (TangentScales). The residual is then available from force_rows() and constraint_rows().
@@ -110,7 +111,8 @@ public:
    */
   Figures evaluate(const Step& step,
                    const DistributedVector& increment,
-                   const Vector<double>& displacement,
+                   const DistributedVector& displacement,
+                   const Vector<double>& border_displacement,
                    SaddlePointSystem<dim>* tangent);
 
   /**
@@ -142,11 +144,12 @@ private:
    */
   void assemble(const Step& step,
                 const DistributedVector& increment,
-                const Vector<double>& displacement,
+                const DistributedVector& displacement,
+                const Vector<double>& border_displacement,
                 SaddlePointSystem<dim>* tangent);
 
   /** The residual vector and the figures from the work vectors of assemble(). */
-  Figures residual_and_figures(const Step& step, const Vector<double>& displacement);
+  Figures residual_and_figures(const Step& step, const DistributedVector& displacement);
 
   const ElasticBodies<dim>& bodies;
   const ContactConstraints<dim>& contact;

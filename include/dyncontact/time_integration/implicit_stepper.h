@@ -27,8 +27,8 @@ namespace dyncontact
  * The treatment sees the contact nodes only: the stepper gathers the states it reads onto the
  * contact border (ContactBorder) and writes back what it changes. It owns the current StepState,
  * whose vectors, like the predictor and the increment, hold each rank's owned DoFs (the layout of
- * the solver's dof_layout()); the contact geometry of u_n is updated from it gathered whole (until
- * the geometry works on border data). The integrator, lumped mass (whole), fixed DoFs, loads,
+ * the solver's dof_layout()); the contact geometry of u_n is updated from its displacement on the
+ * contact border. The integrator, lumped mass (whole), fixed DoFs, loads,
  * contact, its treatment and the Newton solver are the caller's and must outlive it. Every
  * member function is collective.
  */
