@@ -217,6 +217,7 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
                                                 const double gap_tolerance,
                                                 const double force_tolerance)
 {
+  AssertDimension(displacement.size(), contact_border.n_dofs());
   bool changed = false;
   std::vector<unsigned int> tensile_pairs;
   for (unsigned int k = 0; k < pairs.size(); ++k)

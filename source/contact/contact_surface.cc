@@ -4,7 +4,6 @@
 #include <deal.II/base/geometry_info.h>
 #include <deal.II/base/qprojector.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe.h>
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>

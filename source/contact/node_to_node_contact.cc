@@ -207,9 +207,7 @@ std::vector<Node<dim>> NodeToNodeContact<dim>::coupled_nodes(const unsigned int 
 template <int dim>
 std::vector<Node<dim>> NodeToNodeContact<dim>::surface_nodes() const
 {
-  std::vector<Node<dim>> nodes = surface_a.nodes();
-  nodes.insert(nodes.end(), surface_b.nodes().begin(), surface_b.nodes().end());
-  return nodes;
+  return nodes_of_both(surface_a, surface_b);
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(NodeToNodeContact)

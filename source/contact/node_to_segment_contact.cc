@@ -275,9 +275,7 @@ NodeToSegmentContact<dim>::contact_pressures(const BorderDisplacement<dim>& disp
 template <int dim>
 std::vector<Node<dim>> NodeToSegmentContact<dim>::surface_nodes() const
 {
-  std::vector<Node<dim>> nodes = slave_surface.nodes();
-  nodes.insert(nodes.end(), master_surface.nodes().begin(), master_surface.nodes().end());
-  return nodes;
+  return nodes_of_both(slave_surface, master_surface);
 }
 
 // 2D only, the exception to base/dimensions.h: its face patch is a 3-node line.

@@ -369,6 +369,8 @@ double ElasticBodies<dim>::highest_frequency_bound(const std::vector<bool>& fixe
 template <int dim>
 DistributedVector ElasticBodies<dim>::with_cell_ghosts(const DistributedVector& displacement) const
 {
+  Assert(displacement.locally_owned_elements() == force_layout->locally_owned_range(),
+         ExcMessage("the displacement must hold this rank's owned DoFs"));
   DistributedVector ghosted(force_layout);
   ghosted.copy_locally_owned_data_from(displacement);
   ghosted.update_ghost_values();
@@ -409,6 +411,8 @@ void ElasticBodies<dim>::integrate(const DistributedVector& displacement,
                                    MatrixType* tangent,
                                    double* strain_energy) const
 {
+  Assert(displacement.get_partitioner() == force_layout && displacement.has_ghost_elements(),
+         ExcMessage("integrate() reads a displacement from with_cell_ghosts()"));
   const unsigned int n_local = local_component.size();
   if (internal_force != nullptr)
     internal_force->reinit(force_layout);

@@ -117,7 +117,8 @@ MumpsSolver::MumpsSolver(const MPI_Comm communicator)
   instance->ICNTL(21) = 1;  // distributed solution: each rank the rows of its factors
   // The root front without ScaLAPACK (a type-2 front, rows split over the ranks): ScaLAPACK has
   // no LDL^T and factorizes it as LU (6 % more flops at 1.09M DoFs), and its block-cyclic
-  // triangular solves were the slowest part of a 2-rank step (doc/performance.md).
+  // triangular solves were the slowest part of a 2-rank step (doc/performance.md, "Contact
+  // geometry on the border").
   instance->ICNTL(13) = 1;
 }
 

@@ -49,16 +49,16 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
 {
   // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
   // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
-  contact.update_geometry(contact.border().gather(before.displacement));
+  const ContactBorder<dim>& border         = contact.border();
+  const Vector<double> border_displacement = border.gather(before.displacement);
+  contact.update_geometry(border_displacement);
   increment.reinit(before.displacement);
   integrator.predict(before.displacement, before.velocity, before.acceleration, predictor);
   // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).
-  start_acceleration                       = before.acceleration;
-  const ContactBorder<dim>& border         = contact.border();
-  const Vector<double> border_displacement = border.gather(before.displacement),
-                       border_velocity     = border.gather(before.velocity),
-                       border_internal     = border.gather(before.internal_force),
-                       border_external     = border.gather(before.external_force);
+  start_acceleration                   = before.acceleration;
+  const Vector<double> border_velocity = border.gather(before.velocity),
+                       border_internal = border.gather(before.internal_force),
+                       border_external = border.gather(before.external_force);
   const typename ContactDynamics<dim>::StepStart start{
       border_displacement, border_velocity, border_internal, border_external, border_fixed};
   Vector<double> border_acceleration = border.gather(start_acceleration),

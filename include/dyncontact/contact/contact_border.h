@@ -13,12 +13,11 @@ namespace dyncontact
 /**
  * The contact border: every node a contact pair may couple and every node whose position the
  * contact geometry reads (its surfaces' nodes, ContactGeometry::surface_nodes()): the contact
- * nodes, numbered
- * 0 .. n_nodes() - 1 in the order of their first DoF in the volume (the DoFHandler's numbering),
- * and the vectors over them. A border vector holds dim entries per contact node, entry
- * dim i + d for component d of node i (the border DoFs); a volume vector is a vector over the
- * displacement DoFs, whole on every rank or distributed (each rank its owned DoFs). The contact
- * layer (pairs, constraints, rate treatments, contact fields) works on border vectors only:
+ * nodes, numbered 0 .. n_nodes() - 1 in the order of their first DoF in the volume (the
+ * DoFHandler's numbering), and the vectors over them. A border vector holds dim entries per contact
+ * node, entry dim i + d for component d of node i (the border DoFs); a volume vector is a vector
+ * over the displacement DoFs, whole on every rank or distributed (each rank its owned DoFs). The
+ * contact layer (pairs, constraints, rate treatments, contact fields) works on border vectors only:
  * gather() copies the contact nodes' entries of a volume vector (u, v, a, masses, fixed flags) into
  * one, scatter_add() adds a border vector (the contact forces G^T lambda) into a volume vector,
  * scatter() writes one back (corrected rates). The copies are exact, so a computation on border
@@ -113,11 +112,10 @@ struct BorderDisplacement
    */
   Point<dim> current_position(const Node<dim>& node) const
   {
-    Point<dim> position           = node.position;
-    const Node<dim>& contact_node = border.node(border.index(node));
-    for (unsigned int d = 0; d < dim; ++d)
-      position[d] += values[contact_node.dofs[d]];
-    return position;
+    AssertDimension(values.size(), border.n_dofs());
+    Node<dim> on_border = node; // its own position, the border's DoFs
+    on_border.dofs      = border.node(border.index(node)).dofs;
+    return dyncontact::current_position(on_border, values);
   }
 };
 } // namespace dyncontact

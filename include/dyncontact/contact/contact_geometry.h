@@ -4,8 +4,6 @@
 #include <dyncontact/contact/contact_border.h>
 #include <dyncontact/contact/contact_pair.h>
 
-#include <deal.II/lac/vector.h>
-
 #include <sstream>
 #include <string>
 #include <vector>

@@ -94,9 +94,10 @@ public:
 
   /**
    * The nodes of every face, as indices into nodes(), in the order of the scalar element's unit
-   * face support points (FiniteElement::get_unit_face_support_points()): for a Q2 face in 2D the
-   * vertex at xi = 0, the vertex at xi = 1, then the mid-side node at xi = 1/2. One entry per face
-   * of the surface.
+   * face support points (FiniteElement::get_unit_face_support_points()) as the cell sees its face
+   * (the face in standard orientation; in 3D a face may be oriented otherwise for the cell on its
+   * other side): for a Q2 face in 2D the vertex at xi = 0, the vertex at xi = 1, then the mid-side
+   * node at xi = 1/2. One entry per face of the surface.
    */
   const std::vector<std::vector<unsigned int>>& face_nodes() const { return support_point_nodes; }
 
@@ -120,7 +121,8 @@ private:
   /**
    * The shape functions of the nodes of a face of the reference cell at points of that face: per
    * point, each node's value and its derivatives along the face's dim - 1 unit tangential vectors
-   * (GeometryInfo::unit_tangential_vectors), with the point's weight.
+   * (GeometryInfo::unit_tangential_vectors), with the point's weight (a quadrature's; infinite
+   * for the table at the support points, which is not integrated over).
    */
   struct FaceTable
   {
@@ -164,4 +166,13 @@ private:
                                                    unsigned int q,
                                                    const std::vector<Point<dim>>& positions) const;
 };
+
+/** The nodes of `a` followed by those of `b` (a two-surface geometry's surface_nodes()). */
+template <int dim>
+std::vector<Node<dim>> nodes_of_both(const ContactSurface<dim>& a, const ContactSurface<dim>& b)
+{
+  std::vector<Node<dim>> nodes = a.nodes();
+  nodes.insert(nodes.end(), b.nodes().begin(), b.nodes().end());
+  return nodes;
+}
 } // namespace dyncontact

@@ -6,7 +6,6 @@
 #include <dyncontact/contact/contact_surface.h>
 
 #include <deal.II/base/tensor.h>
-#include <deal.II/lac/vector.h>
 
 #include <vector>
 
@@ -72,7 +71,9 @@ public:
   /** The candidate pairs, with their reference normals. */
   const std::vector<ContactPair<dim>>& pairs() const override { return candidate_pairs; }
 
-  /** Sets each pair's normal to current_normals(displacement); the partners never change. */
+  /**
+   * Sets each pair's normal to current_normals() at `displacement`; the partners never change.
+   */
   void update_pairs(const BorderDisplacement<dim>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
 

@@ -5,8 +5,6 @@
 #include <dyncontact/contact/contact_pair.h>
 #include <dyncontact/contact/contact_surface.h>
 
-#include <deal.II/lac/vector.h>
-
 #include <vector>
 
 namespace dyncontact

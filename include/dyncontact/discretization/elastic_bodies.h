@@ -33,9 +33,11 @@ struct BodyMaterial
  * lumped mass, the internal force Q(u), its tangent dQ/du and the strain energy, all in the
  * total-Lagrangian setting. It knows neither contact nor time stepping.
  *
- * Parallel: every MPI rank integrates its locally owned cells; nodal vectors (mass, Q) and the
- * energy are summed over the ranks, so every rank holds them whole. The tangent goes into a
- * distributed Trilinos matrix (entries in rows owned elsewhere are sent on compress()).
+ * Parallel: every MPI rank integrates its locally owned cells, reading the displacement of their
+ * DoFs owned elsewhere as ghosts; Q goes to the owners of its DoFs (each rank holds its owned
+ * DoFs) and the energy is summed over the ranks; the lumped mass is summed over the ranks and held
+ * whole on every rank. The tangent goes into a distributed Trilinos matrix (entries in rows owned
+ * elsewhere are sent on compress()).
  *
  * The lumped mass is the HRZ (Hinton-Rock-Zienkiewicz) diagonal: per cell, the diagonal of the
  * consistent mass scaled so that each component's entries sum to the cell's mass. It is positive
@@ -107,7 +109,7 @@ public:
   /**
    * Bodies with a constant tangent (has_constant_tangent()): adds K, this rank's cells' share,
    * into the leading block of `tangent` (an integration at u = 0; the caller keeps it, e.g. as
-   * SaddlePointSystem's constant part).
+   * SaddlePointSystem's constant part). Collective.
    */
   void add_constant_tangent(TrilinosWrappers::SparseMatrix& tangent) const;
 
@@ -143,7 +145,8 @@ private:
                                        const std::vector<bool>& massless) const;
 
   /**
-   * One pass over all quadrature points filling whichever of the outputs is not null; `tangent`
+   * One pass over all quadrature points filling whichever of the outputs is not null, at
+   * `displacement` in force_layout with its ghosts updated (with_cell_ghosts()); `tangent`
    * is a TrilinosWrappers::SparseMatrix or (for K of linear bodies) a SparseMatrix<double>.
    */
   template <typename MatrixType>
@@ -178,8 +181,9 @@ private:
   std::vector<unsigned int> local_component;
   std::vector<CellData> cells;
   /**
-   * The layout of the internal force: this rank's owned DoFs, and as ghosts the other DoFs of its
-   * cells (their contributions are sent to the owners).
+   * The layout of the internal force and of the displacement the cells read: this rank's owned
+   * DoFs, and as ghosts the other DoFs of its cells (their force contributions are sent to the
+   * owners, their displacements fetched from them).
    */
   std::shared_ptr<const Utilities::MPI::Partitioner> force_layout;
 

@@ -99,9 +99,8 @@ public:
   /**
    * Evaluates the residual at `displacement` = step.predictor + `increment` (both this rank's
    * owned DoFs; `border_displacement` its entries on the contact border) with the multipliers and
-   * active
-   * set the contact layer holds, and, if `tangent` is not null, assembles the tangent into it (from
-   * its constant part, keep_constant_tangent(), or from zero) and records its scales
+   * active set the contact layer holds, and, if `tangent` is not null, assembles the tangent into
+   * it (from its constant part, keep_constant_tangent(), or from zero) and records its scales
    * (TangentScales). The residual is then available from force_rows() and constraint_rows().
    * Without a tangent the figures use the scales of the last assembly (tangent_scales()).
    *

@@ -31,6 +31,10 @@ namespace dyncontact
  * receives the rows of its factors), all columns of a call at once; the solution rows are then
  * sent to the ranks that own them (MPI_Alltoallv).
  *
+ * The root front is not given to ScaLAPACK (ICNTL(13) = 1: its rows are split over the ranks
+ * instead): ScaLAPACK has no LDL^T and factorized it as LU, and its triangular solves were the
+ * slowest phase of a 2-rank step (doc/performance.md, "Contact geometry on the border").
+ *
  * Errors of MUMPS (a singular matrix: INFOG(1) = -10; out of memory) are thrown as SolverFailure
  * with MUMPS's error code; a factorization that ran out of its estimated workspace (INFOG(1) = -8
  * or -9) is retried with twice the relaxation (ICNTL(14)), up to three times.
