@@ -20,6 +20,7 @@
 #include <cmath>
 #include <gtest/gtest.h>
 #include <set>
+#include <string>
 
 namespace dyncontact::testing
 {
@@ -115,42 +116,43 @@ NansonErrors nanson_errors(Triangulation<dim>& triangulation, const Kinematics<d
   errors.area = std::abs(area - deformed_area) / deformed_area;
   return errors;
 }
+
+/** The errors on [0, 1]^dim, colorized (a surface per face), refined `refinements` times. */
+template <int dim>
+NansonErrors errors_on_unit_cube(const unsigned int refinements, const Kinematics<dim>& kinematics)
+{
+  Triangulation<dim> triangulation;
+  GridGenerator::hyper_cube(triangulation, 0., 1., /*colorize=*/true);
+  triangulation.refine_global(refinements);
+  return nanson_errors(triangulation, kinematics);
+}
+
+/**
+ * Bound 1e-13: the faces are flat after an affine map, so normals and areas are exact up to the
+ * round-off of sums over a few nodes (measured below 1e-15); a normal with the wrong sign, or the
+ * tangents of another face number, is off by O(1), a wrong weight or measure by O(0.1).
+ */
+void expect_exact(const NansonErrors& errors, const std::string& mesh)
+{
+  EXPECT_LE(errors.normal, 1e-13) << mesh;
+  EXPECT_LE(errors.area, 1e-13) << mesh;
+  EXPECT_GT(errors.checked_nodes, 0u) << mesh;
+}
 } // namespace
 
-// Bound 1e-13: the faces are flat after an affine map, so normals and areas are exact up to the
-// round-off of sums over a few nodes (measured below 1e-15); a normal with the wrong sign, or the
-// tangents of another face number, is off by O(1), a wrong weight or measure by O(0.1).
 TEST(ContactSurface, EndsOfABarFollowNanson)
 {
-  Triangulation<1> triangulation;
-  GridGenerator::hyper_cube(triangulation, 0., 1., /*colorize=*/true);
-  triangulation.refine_global(2);
-  const NansonErrors errors = nanson_errors(triangulation, BarKinematics({1.}));
-  EXPECT_LE(errors.normal, 1e-13);
-  EXPECT_LE(errors.area, 1e-13);
-  EXPECT_GT(errors.checked_nodes, 0u);
+  expect_exact(errors_on_unit_cube(2, BarKinematics({1.})), "bar");
 }
 
 TEST(ContactSurface, FacesOfASquareFollowNanson)
 {
-  Triangulation<2> triangulation;
-  GridGenerator::hyper_cube(triangulation, 0., 1., /*colorize=*/true);
-  triangulation.refine_global(1);
-  const NansonErrors errors = nanson_errors(triangulation, PlaneStrainKinematics());
-  EXPECT_LE(errors.normal, 1e-13);
-  EXPECT_LE(errors.area, 1e-13);
-  EXPECT_GT(errors.checked_nodes, 0u);
+  expect_exact(errors_on_unit_cube(1, PlaneStrainKinematics()), "square");
 }
 
 TEST(ContactSurface, FacesOfACubeFollowNanson)
 {
-  Triangulation<3> triangulation;
-  GridGenerator::hyper_cube(triangulation, 0., 1., /*colorize=*/true);
-  triangulation.refine_global(1);
-  const NansonErrors errors = nanson_errors(triangulation, SolidKinematics());
-  EXPECT_LE(errors.normal, 1e-13);
-  EXPECT_LE(errors.area, 1e-13);
-  EXPECT_GT(errors.checked_nodes, 0u);
+  expect_exact(errors_on_unit_cube(1, SolidKinematics()), "cube");
 }
 
 // Two cubes side by side whose common face one of them sees flipped and rotated: the cells'
@@ -163,10 +165,8 @@ TEST(ContactSurface, FacesOfCubesInNonStandardOrientationFollowNanson)
     GridGenerator::non_standard_orientation_mesh(
         triangulation, false, true, true, manipulate_left_cube);
     triangulation.refine_global(1);
-    const NansonErrors errors = nanson_errors(triangulation, SolidKinematics());
-    EXPECT_LE(errors.normal, 1e-13) << manipulate_left_cube;
-    EXPECT_LE(errors.area, 1e-13) << manipulate_left_cube;
-    EXPECT_GT(errors.checked_nodes, 0u) << manipulate_left_cube;
+    expect_exact(nanson_errors(triangulation, SolidKinematics()),
+                 manipulate_left_cube ? "left cube turned" : "right cube turned");
   }
 }
 } // namespace dyncontact::testing
