@@ -54,13 +54,26 @@ Vector<double> ContactBorder<dim>::gather(const Vector<double>& volume) const
 template <int dim>
 Vector<double> ContactBorder<dim>::gather(const DistributedVector& volume) const
 {
+  return gather_all({&volume})[0];
+}
+
+template <int dim>
+std::vector<Vector<double>>
+ContactBorder<dim>::gather_all(const std::vector<const DistributedVector*>& volumes) const
+{
+  if (volumes.empty())
+    return {};
   // Each entry from its owner, zero elsewhere; the sum over the ranks adds only zeros to it.
-  Vector<double> border(n_dofs());
-  for (unsigned int i = 0; i < border.size(); ++i)
-    if (volume.in_local_range(volume_dof(i)))
-      border[i] = volume(volume_dof(i));
-  sum_over_ranks(border, volume.get_mpi_communicator());
-  return border;
+  Vector<double> all(volumes.size() * n_dofs());
+  for (unsigned int v = 0; v < volumes.size(); ++v)
+    for (unsigned int i = 0; i < n_dofs(); ++i)
+      if (volumes[v]->in_local_range(volume_dof(i)))
+        all[v * n_dofs() + i] = (*volumes[v])(volume_dof(i));
+  sum_over_ranks(all, volumes.front()->get_mpi_communicator());
+  std::vector<Vector<double>> borders(volumes.size(), Vector<double>(n_dofs()));
+  for (unsigned int v = 0; v < volumes.size(); ++v)
+    std::copy_n(all.begin() + v * n_dofs(), n_dofs(), borders[v].begin());
+  return borders;
 }
 
 template <int dim>

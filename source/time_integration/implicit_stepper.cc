@@ -47,22 +47,23 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
                                          const double time,
                                          DistributedVector& increment)
 {
-  // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
-  // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
-  const ContactBorder<dim>& border         = contact.border();
-  const Vector<double> border_displacement = border.gather(before.displacement);
-  contact.update_geometry(border_displacement);
   increment.reinit(before.displacement);
   integrator.predict(before.displacement, before.velocity, before.acceleration, predictor);
   // The acceleration at t_n the step uses (a contact-dynamics treatment may replace it).
   start_acceleration                   = before.acceleration;
-  const Vector<double> border_velocity = border.gather(before.velocity),
-                       border_internal = border.gather(before.internal_force),
-                       border_external = border.gather(before.external_force);
+  const ContactBorder<dim>& border     = contact.border();
+  std::vector<Vector<double>> at_start = border.gather_all({&before.displacement,
+                                                            &before.velocity,
+                                                            &before.internal_force,
+                                                            &before.external_force,
+                                                            &start_acceleration,
+                                                            &predictor});
+  // The pairs (normals, master points) of u_n, held over the step: the solve, the rate
+  // correction and the step's measures (gaps, jumps, recovered forces) all see the same pairs.
+  contact.update_geometry(at_start[0]);
   const typename ContactDynamics<dim>::StepStart start{
-      border_displacement, border_velocity, border_internal, border_external, border_fixed};
-  Vector<double> border_acceleration = border.gather(start_acceleration),
-                 border_predictor    = border.gather(predictor);
+      at_start[0], at_start[1], at_start[2], at_start[3], border_fixed};
+  Vector<double>&border_acceleration = at_start[4], &border_predictor = at_start[5];
   dynamics.adjust_predictor(
       integrator.rate_map(), contact, border_mass, start, border_acceleration, border_predictor);
   border.scatter(border_acceleration, start_acceleration);
@@ -105,20 +106,22 @@ void ImplicitStepper<dim>::finish(const StepState& before, const DistributedVect
   current.displacement += increment;
   integrator.update_rates(
       increment, before.velocity, start_acceleration, current.velocity, current.acceleration);
-  const ContactBorder<dim>& border   = contact.border();
-  Vector<double> border_velocity     = border.gather(current.velocity),
-                 border_acceleration = border.gather(current.acceleration);
-  dynamics.correct_rates(integrator.rate_map(),
-                         contact,
-                         border_mass,
-                         {border.gather(before.displacement),
-                          border.gather(before.velocity),
-                          border.gather(start_acceleration),
-                          border.gather(current.displacement),
-                          border.gather(increment),
-                          border_fixed},
-                         border_velocity,
-                         border_acceleration);
+  const ContactBorder<dim>& border      = contact.border();
+  std::vector<Vector<double>> on_border = border.gather_all({&current.velocity,
+                                                             &current.acceleration,
+                                                             &before.displacement,
+                                                             &before.velocity,
+                                                             &start_acceleration,
+                                                             &current.displacement,
+                                                             &increment});
+  Vector<double>&border_velocity = on_border[0], &border_acceleration = on_border[1];
+  dynamics.correct_rates(
+      integrator.rate_map(),
+      contact,
+      border_mass,
+      {on_border[2], on_border[3], on_border[4], on_border[5], on_border[6], border_fixed},
+      border_velocity,
+      border_acceleration);
   border.scatter(border_velocity, current.velocity);
   border.scatter(border_acceleration, current.acceleration);
 }

@@ -72,6 +72,13 @@ public:
    */
   Vector<double> gather(const DistributedVector& volume) const;
 
+  /**
+   * gather() of each of the distributed volume vectors `volumes` (same layout), in their order,
+   * in one sum over the ranks instead of one per vector. Collective.
+   */
+  std::vector<Vector<double>>
+  gather_all(const std::vector<const DistributedVector*>& volumes) const;
+
   /** The contact nodes' entries of the per-DoF flags `volume` (one per border DoF). */
   std::vector<bool> gather(const std::vector<bool>& volume) const;
 
