@@ -90,8 +90,7 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
   }
 
   std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-  // Per face: the first DoFs of its nodes in the order of the face number's tables, then by unit
-  // face support point.
+  // Per face: the first DoFs of its nodes in the order of the face number's tables.
   std::vector<std::vector<types::global_dof_index>> face_first_dofs;
   std::vector<types::global_dof_index> first_dofs;
   for (const auto& cell : dof_handler.active_cell_iterators())
@@ -103,9 +102,6 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
         face_first_dofs.emplace_back();
         for (const unsigned int i : dofs_on_face[f])
           face_first_dofs.back().push_back(cell_dofs[fe.component_to_system_index(0, i)]);
-        for (unsigned int j = 0; j < scalar.n_dofs_per_face(f); ++j)
-          face_first_dofs.back().push_back(
-              cell_dofs[fe.component_to_system_index(0, scalar.face_to_cell_index(j, f))]);
         first_dofs.insert(
             first_dofs.end(), face_first_dofs.back().begin(), face_first_dofs.back().end());
       }
@@ -123,13 +119,15 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
     }
   for (unsigned int face = 0; face < faces.size(); ++face)
   {
-    const std::vector<types::global_dof_index>& dofs = face_first_dofs[face];
-    const unsigned int n_nodes                       = dofs_on_face[faces[face].face_number].size();
-    for (unsigned int i = 0; i < n_nodes; ++i)
-      faces[face].nodes.push_back(node_of_first_dof.at(dofs[i]));
+    for (const types::global_dof_index dof : face_first_dofs[face])
+      faces[face].nodes.push_back(node_of_first_dof.at(dof));
+    // The node at support point j is the one whose (Lagrange) shape function is one there.
+    const FaceTable& table = at_nodes[faces[face].face_number];
     support_point_nodes.emplace_back();
-    for (unsigned int j = n_nodes; j < dofs.size(); ++j)
-      support_point_nodes.back().push_back(node_of_first_dof.at(dofs[j]));
+    for (unsigned int j = 0; j < table.values.size(); ++j)
+      for (unsigned int i = 0; i < faces[face].nodes.size(); ++i)
+        if (table.values[j][i] > 0.5)
+          support_point_nodes.back().push_back(faces[face].nodes[i]);
   }
 }
 
@@ -177,17 +175,14 @@ ContactSurface<dim>::normals(const std::vector<Point<dim>>& positions) const
 {
   AssertDimension(positions.size(), surface_nodes.size());
   std::vector<Tensor<1, dim>> nodal_normals(surface_nodes.size());
-  for (const Face& face : faces)
+  for (unsigned int f = 0; f < faces.size(); ++f)
   {
-    // The table's points are the face's support points; the node at point q is the one whose
-    // (Lagrange) shape function is one there.
-    const FaceTable& table = at_nodes[face.face_number];
-    for (unsigned int q = 0; q < table.values.size(); ++q)
+    // The table's points are the face's support points, of the nodes support_point_nodes lists.
+    const FaceTable& table = at_nodes[faces[f].face_number];
+    for (unsigned int j = 0; j < table.values.size(); ++j)
     {
-      const Tensor<1, dim> normal = face_point(face, table, q, positions).second;
-      for (unsigned int i = 0; i < face.nodes.size(); ++i)
-        if (table.values[q][i] > 0.5)
-          nodal_normals[face.nodes[i]] += normal / normal.norm();
+      const Tensor<1, dim> normal = face_point(faces[f], table, j, positions).second;
+      nodal_normals[support_point_nodes[f][j]] += normal / normal.norm();
     }
   }
   for (auto& normal : nodal_normals)
