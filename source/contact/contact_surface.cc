@@ -2,17 +2,37 @@
 #include <dyncontact/contact/contact_surface.h>
 
 #include <deal.II/base/geometry_info.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/qprojector.h>
 #include <deal.II/base/quadrature_lib.h>
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <boost/serialization/vector.hpp>
 #include <map>
 
 namespace dyncontact
 {
 namespace
 {
+/** A face of a contact surface as one rank found it: sent to every rank. */
+template <int dim>
+struct FaceRecord
+{
+  unsigned int face_number;
+  types::material_id body;
+  /** Its nodes, in the order of the face number's tables. */
+  std::vector<Node<dim>> nodes;
+
+  template <class Archive>
+  void serialize(Archive& archive, const unsigned int /*version*/)
+  {
+    archive& face_number;
+    archive& body;
+    archive& nodes;
+  }
+};
+
 /**
  * The normal of a face before orientation and normalization, from its tangents a_k = dx/ds_k:
  * (a_0[1], -a_0[0]) in 2D, a_0 x a_1 in 3D, e_0 in 1D (a face is a point). Its length is the
@@ -89,45 +109,50 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
                                                                                             : -1.);
   }
 
+  // The faces of this rank's cells, then those of every rank, in the order of the ranks.
   std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-  // Per face: the first DoFs of its nodes in the order of the face number's tables.
-  std::vector<std::vector<types::global_dof_index>> face_first_dofs;
-  std::vector<types::global_dof_index> first_dofs;
+  std::vector<FaceRecord<dim>> local_faces;
   for (const auto& cell : dof_handler.active_cell_iterators())
-    for (const unsigned int f : cell->face_indices())
-      if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary)
-      {
-        cell->get_dof_indices(cell_dofs);
-        faces.push_back({f, cell->material_id(), {}});
-        face_first_dofs.emplace_back();
-        for (const unsigned int i : dofs_on_face[f])
-          face_first_dofs.back().push_back(cell_dofs[fe.component_to_system_index(0, i)]);
-        first_dofs.insert(
-            first_dofs.end(), face_first_dofs.back().begin(), face_first_dofs.back().end());
-      }
-  if (faces.empty())
+    if (cell->is_locally_owned())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary)
+        {
+          cell->get_dof_indices(cell_dofs);
+          local_faces.push_back({f, cell->material_id(), {}});
+          for (const unsigned int i : dofs_on_face[f])
+            local_faces.back().nodes.push_back(
+                nodes.node_of_first_dof(cell_dofs[fe.component_to_system_index(0, i)]));
+        }
+  std::vector<FaceRecord<dim>> all_faces;
+  for (const auto& rank_faces :
+       Utilities::MPI::all_gather(dof_handler.get_triangulation().get_communicator(), local_faces))
+    all_faces.insert(all_faces.end(), rank_faces.begin(), rank_faces.end());
+  if (all_faces.empty())
     throw InputError("the mesh has no boundary faces with id " + std::to_string(boundary) +
                      ", so this contact surface is empty.");
-  std::sort(first_dofs.begin(), first_dofs.end());
-  first_dofs.erase(std::unique(first_dofs.begin(), first_dofs.end()), first_dofs.end());
-  std::map<types::global_dof_index, unsigned int> node_of_first_dof; // index in surface_nodes
-  for (const auto& node : nodes.nodes())
-    if (std::binary_search(first_dofs.begin(), first_dofs.end(), node.dofs[0]))
-    {
-      node_of_first_dof.emplace(node.dofs[0], surface_nodes.size());
-      surface_nodes.push_back(node);
-    }
-  for (unsigned int face = 0; face < faces.size(); ++face)
+  // Each node once (as the first rank that has it sent it), ordered as in NodeIndex.
+  std::map<types::global_dof_index, Node<dim>> node_of_first_dof;
+  for (const FaceRecord<dim>& face : all_faces)
+    for (const Node<dim>& node : face.nodes)
+      node_of_first_dof.emplace(node.dofs[0], node);
+  for (const auto& entry : node_of_first_dof)
+    surface_nodes.push_back(entry.second);
+  std::sort(surface_nodes.begin(), surface_nodes.end(), precedes<dim>);
+  std::map<types::global_dof_index, unsigned int> index_of_first_dof; // in surface_nodes
+  for (unsigned int i = 0; i < surface_nodes.size(); ++i)
+    index_of_first_dof.emplace(surface_nodes[i].dofs[0], i);
+  for (const FaceRecord<dim>& record : all_faces)
   {
-    for (const types::global_dof_index dof : face_first_dofs[face])
-      faces[face].nodes.push_back(node_of_first_dof.at(dof));
+    faces.push_back({record.face_number, record.body, {}});
+    for (const Node<dim>& node : record.nodes)
+      faces.back().nodes.push_back(index_of_first_dof.at(node.dofs[0]));
     // The node at support point j is the one whose (Lagrange) shape function is one there.
-    const FaceTable& table = at_nodes[faces[face].face_number];
+    const FaceTable& table = at_nodes[record.face_number];
     support_point_nodes.emplace_back();
     for (unsigned int j = 0; j < table.values.size(); ++j)
-      for (unsigned int i = 0; i < faces[face].nodes.size(); ++i)
+      for (unsigned int i = 0; i < faces.back().nodes.size(); ++i)
         if (table.values[j][i] > 0.5)
-          support_point_nodes.back().push_back(faces[face].nodes[i]);
+          support_point_nodes.back().push_back(faces.back().nodes[i]);
   }
 }
 

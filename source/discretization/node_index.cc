@@ -1,9 +1,11 @@
 #include <dyncontact/base/dimensions.h>
 #include <dyncontact/discretization/node_index.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe.h>
 
 #include <algorithm>
+#include <boost/serialization/vector.hpp>
 #include <limits>
 #include <map>
 
@@ -11,6 +13,8 @@ namespace dyncontact
 {
 template <int dim>
 NodeIndex<dim>::NodeIndex(const DoFHandler<dim>& dof_handler, const Mapping<dim>& mapping)
+    : communicator(dof_handler.get_triangulation().get_communicator()),
+      locally_owned_dofs(dof_handler.locally_owned_dofs())
 {
   const FiniteElement<dim>& fe = dof_handler.get_fe();
   Assert(fe.n_components() == dim, ExcMessage("NodeIndex expects a dim-component vector field."));
@@ -21,6 +25,8 @@ NodeIndex<dim>::NodeIndex(const DoFHandler<dim>& dof_handler, const Mapping<dim>
   std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
+    if (cell->is_artificial())
+      continue;
     cell->get_dof_indices(local_dofs);
     // Local DoFs of one support point are adjacent per base node: group them by the base index.
     std::map<unsigned int, std::array<types::global_dof_index, dim>> dofs_of_base_node;
@@ -42,34 +48,60 @@ NodeIndex<dim>::NodeIndex(const DoFHandler<dim>& dof_handler, const Mapping<dim>
     }
   }
   for (const auto& entry : nodes_by_first_dof)
-    all_nodes.push_back(entry.second);
-  std::sort(all_nodes.begin(),
-            all_nodes.end(),
-            [](const Node<dim>& a, const Node<dim>& b)
-            {
-              if (a.body != b.body)
-                return a.body < b.body;
-              for (unsigned int d = 0; d < dim; ++d)
-                if (a.position[d] != b.position[d])
-                  return a.position[d] < b.position[d];
-              return false;
-            });
+    local_nodes.push_back(entry.second);
+  std::sort(local_nodes.begin(), local_nodes.end(), precedes<dim>);
+  for (unsigned int i = 0; i < local_nodes.size(); ++i)
+    by_first_dof.emplace_back(local_nodes[i].dofs[0], i);
+  std::sort(by_first_dof.begin(), by_first_dof.end());
 }
 
 template <int dim>
-const Node<dim>& NodeIndex<dim>::closest_node(const types::material_id body,
-                                              const Point<dim>& point) const
+const Node<dim>& NodeIndex<dim>::node_of_first_dof(const types::global_dof_index first_dof) const
+{
+  const auto found =
+      std::lower_bound(by_first_dof.begin(), by_first_dof.end(), std::make_pair(first_dof, 0u));
+  Assert(found != by_first_dof.end() && found->first == first_dof,
+         ExcMessage("DoF " + std::to_string(first_dof) + " is no node's first DoF on this rank"));
+  return local_nodes[found->second];
+}
+
+template <int dim>
+std::vector<Node<dim>> NodeIndex<dim>::gather_on_root() const
+{
+  std::vector<Node<dim>> owned;
+  for (const Node<dim>& node : local_nodes)
+    if (locally_owned_dofs.is_element(node.dofs[0]))
+      owned.push_back(node);
+  const std::vector<std::vector<Node<dim>>> by_rank = Utilities::MPI::gather(communicator, owned);
+  std::vector<Node<dim>> all;
+  for (const auto& part : by_rank)
+    all.insert(all.end(), part.begin(), part.end());
+  std::sort(all.begin(), all.end(), precedes<dim>);
+  return all;
+}
+
+template <int dim>
+Node<dim> NodeIndex<dim>::closest_node(const types::material_id body, const Point<dim>& point) const
 {
   const Node<dim>* closest = nullptr;
   double distance          = std::numeric_limits<double>::max();
-  for (const auto& node : all_nodes)
+  for (const auto& node : local_nodes)
     if (node.body == body && node.position.distance(point) < distance)
     {
       distance = node.position.distance(point);
       closest  = &node;
     }
-  AssertThrow(closest != nullptr, ExcMessage("No node of body " + std::to_string(body) + "."));
-  return *closest;
+  // The lowest rank of those at the smallest distance sends its node.
+  struct
+  {
+    double distance;
+    int rank;
+  } mine{distance, static_cast<int>(Utilities::MPI::this_mpi_process(communicator))}, nearest;
+  MPI_Allreduce(&mine, &nearest, 1, MPI_DOUBLE_INT, MPI_MINLOC, communicator);
+  AssertThrow(nearest.distance < std::numeric_limits<double>::max(),
+              ExcMessage("No node of body " + std::to_string(body) + "."));
+  return Utilities::MPI::broadcast(
+      communicator, closest != nullptr ? *closest : Node<dim>{}, nearest.rank);
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(NodeIndex)

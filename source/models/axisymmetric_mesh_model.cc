@@ -94,6 +94,11 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
             std::min(closest_boundary_vertices, vertex_0.distance(vertex_1));
 }
 
+void AxisymmetricMeshModel::attach_manifolds(Triangulation<2>& triangulation) const
+{
+  dyncontact::attach_manifolds(geometry, triangulation);
+}
+
 double AxisymmetricMeshModel::touching_tolerance() const
 {
   return std::max(1e-9 * shortest_edge,

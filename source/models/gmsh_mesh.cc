@@ -528,15 +528,11 @@ classify_curve(const std::string& filename, const types::boundary_id id, const C
 }
 
 /**
- * Sets the manifold ids of read_gmsh_mesh() and attaches the manifolds: a SphericalManifold with
- * the curve's id on each circular curve, the TransfiniteInterpolationManifold on the cells with a
- * face on one, flat everywhere else (the axis, straight curves, the other cells and the interior
- * faces). The transfinite manifold searches all cells it is attached to for every point it places
- * (deal.II 9.4), so attached to every cell it made set-up quadratic in the number of cells (a
- * 10^6-DoF mesh did not finish in 3 minutes); the cells away from the curves are bilinear, where
- * it and the flat manifold place the same points (as in deal.II's step-65).
+ * Sets the manifold ids of read_gmsh_mesh(): each circular curve's id on its faces, and
+ * SphereMeshIds::interior_manifold on the cells with a face on one (attach_manifolds() then gives
+ * them their manifolds).
  */
-void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulation)
+void set_manifold_ids(const MeshGeometry& geometry, Triangulation<2>& triangulation)
 {
   for (const auto& cell : triangulation.active_cell_iterators())
     for (const auto& face : cell->face_iterators())
@@ -549,14 +545,6 @@ void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulat
           cell->set_manifold_id(SphereMeshIds::interior_manifold);
         }
       }
-
-  for (const BoundaryCurve& curve : geometry.curves)
-    if (curve.circle)
-      triangulation.set_manifold(curve.id, SphericalManifold<2>(curve.circle->centre));
-  // It interpolates from the cells' boundaries, so it needs the manifolds above in place.
-  TransfiniteInterpolationManifold<2> interior;
-  interior.initialize(triangulation);
-  triangulation.set_manifold(SphereMeshIds::interior_manifold, interior);
 }
 } // namespace
 
@@ -581,6 +569,17 @@ std::optional<SphereGeometry> MeshGeometry::sphere(const unsigned int body) cons
       ++n_curves;
     }
   return n_curves == 1 ? only->circle : std::nullopt;
+}
+
+void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulation)
+{
+  for (const BoundaryCurve& curve : geometry.curves)
+    if (curve.circle)
+      triangulation.set_manifold(curve.id, SphericalManifold<2>(curve.circle->centre));
+  // It interpolates from the cells' boundaries, so it needs the manifolds above in place.
+  TransfiniteInterpolationManifold<2> interior;
+  interior.initialize(triangulation);
+  triangulation.set_manifold(SphereMeshIds::interior_manifold, interior);
 }
 
 MeshGeometry read_gmsh_mesh(const std::string& filename,
@@ -613,6 +612,7 @@ MeshGeometry read_gmsh_mesh(const std::string& filename,
     geometry.n_bodies = assign_bodies(filename, triangulation);
     for (const auto& [id, faces] : collect_curves(filename, triangulation))
       geometry.curves.push_back(classify_curve(filename, id, faces));
+    set_manifold_ids(geometry, triangulation);
     attach_manifolds(geometry, triangulation);
     return geometry;
   }

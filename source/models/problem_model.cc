@@ -10,6 +10,11 @@ std::vector<types::global_dof_index> ProblemModel<dim>::fixed_dofs(const NodeInd
 }
 
 template <int dim>
+void ProblemModel<dim>::attach_manifolds(Triangulation<dim>&) const
+{
+}
+
+template <int dim>
 std::vector<SurfaceTraction<dim>> ProblemModel<dim>::surface_tractions() const
 {
   return {};

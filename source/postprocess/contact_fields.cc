@@ -147,8 +147,8 @@ double ContactFields<dim>::contact_radius(const DistributedVector& displacement)
 }
 
 template <int dim>
-Vector<double> ContactFields<dim>::traction(const std::vector<double>& pressures,
-                                            const unsigned int n_dofs) const
+DistributedVector ContactFields<dim>::traction(const std::vector<double>& pressures,
+                                               const DistributedVector& layout) const
 {
   Vector<double> traction(contact.border().n_dofs());
   // The slave node's pressure along -n on body A; on body B distributed to the master nodes by
@@ -161,7 +161,7 @@ Vector<double> ContactFields<dim>::traction(const std::vector<double>& pressures
             traction[node.dofs[d]] +=
                 coefficient * pressures[k] * contact.candidate_pairs()[k].normal[d];
         });
-  Vector<double> volume_traction(n_dofs);
+  DistributedVector volume_traction(layout.get_partitioner());
   contact.border().scatter_add(traction, volume_traction);
   return volume_traction;
 }

@@ -2,10 +2,12 @@
 #include <dyncontact/postprocess/field_output.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_out_faces.h>
 
 #include <algorithm>
+#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -102,6 +104,8 @@ FieldOutput<dim>::FieldOutput(const DoFHandler<dim>& dof_handler,
   std::vector<types::global_dof_index> scalar_dofs(scalar_fe->n_dofs_per_cell());
   for (const auto& cell : dof_handler.active_cell_iterators())
   {
+    if (cell->is_artificial())
+      continue;
     cell->get_dof_indices(dofs);
     typename DoFHandler<dim>::active_cell_iterator scalar_cell(
         &dof_handler.get_triangulation(), cell->level(), cell->index(), &scalar_dof_handler);
@@ -110,15 +114,30 @@ FieldOutput<dim>::FieldOutput(const DoFHandler<dim>& dof_handler,
       if (fe.system_to_component_index(i).first == 0)
         scalar_dof[dofs[i]] = scalar_dofs[fe.system_to_component_index(i).second];
   }
+  IndexSet relevant_dofs;
+  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+  ghosted_layout = std::make_shared<Utilities::MPI::Partitioner>(
+      dof_handler.locally_owned_dofs(),
+      relevant_dofs,
+      dof_handler.get_triangulation().get_communicator());
+}
+
+template <int dim>
+DistributedVector FieldOutput<dim>::with_ghosts(const DistributedVector& owned) const
+{
+  DistributedVector ghosted(ghosted_layout);
+  ghosted.copy_locally_owned_data_from(owned);
+  ghosted.update_ghost_values();
+  return ghosted;
 }
 
 template <int dim>
 void FieldOutput<dim>::write_fields(const unsigned int frame,
                                     const double time,
-                                    const Vector<double>& displacement,
-                                    const Vector<double>& velocity,
-                                    const Vector<double>& acceleration,
-                                    const Vector<double>* contact_traction)
+                                    const DistributedVector& displacement,
+                                    const DistributedVector& velocity,
+                                    const DistributedVector& acceleration,
+                                    const DistributedVector* contact_traction)
 {
   const std::vector<DataComponentInterpretation::DataComponentInterpretation> vector_field(
       dim, DataComponentInterpretation::component_is_part_of_vector);
@@ -161,7 +180,7 @@ void FieldOutput<dim>::write_fields(const unsigned int frame,
 template <int dim>
 void FieldOutput<dim>::write_contact_surface(const unsigned int frame,
                                              const double time,
-                                             const Vector<double>& displacement,
+                                             const DistributedVector& displacement,
                                              const std::vector<PressureSample>& samples)
 {
   if (contact_surfaces.empty())
@@ -174,10 +193,12 @@ void FieldOutput<dim>::write_contact_surface(const unsigned int frame,
   for (const auto& sample : samples)
   {
     const types::global_dof_index dof = scalar_dof[sample.node.dofs[0]];
-    pressure[dof]                     = sample.pressure;
-    gap[dof]                          = sample.gap;
-    active[dof]                       = sample.active ? 1. : 0.;
-    has_pair[dof]                     = true;
+    if (dof == numbers::invalid_dof_index)
+      continue; // a node of another rank's cells
+    pressure[dof] = sample.pressure;
+    gap[dof]      = sample.gap;
+    active[dof]   = sample.active ? 1. : 0.;
+    has_pair[dof] = true;
   }
   if constexpr (dim == 1)
   {
@@ -277,13 +298,9 @@ void FieldOutput<dim>::write_contact_pressure(const double time,
 }
 
 template <int dim>
-void FieldOutput<dim>::write_cell_outlines(const std::vector<Node<dim>>& nodes) const
+void FieldOutput<dim>::write_cell_outlines(const NodeIndex<dim>& node_index) const
 {
   AssertThrow(dim == 2, ExcNotImplemented());
-  std::map<types::global_dof_index, unsigned int> row_of_first_dof;
-  for (unsigned int row = 0; row < nodes.size(); ++row)
-    row_of_first_dof.emplace(nodes[row].dofs[0], row);
-
   // The boundary support points of the reference cell, counter-clockwise around its centre.
   const FiniteElement<dim>& fe = dof_handler.get_fe();
   Point<dim> centre;
@@ -298,20 +315,37 @@ void FieldOutput<dim>::write_cell_outlines(const std::vector<Node<dim>>& nodes) 
   }
   std::sort(outline.begin(), outline.end());
 
+  // Per locally owned cell: its body, then the first DoFs of its outline's nodes.
+  std::vector<types::global_dof_index> cells, cell_dofs(fe.n_dofs_per_cell());
+  for (const auto& cell : dof_handler.active_cell_iterators())
+    if (cell->is_locally_owned())
+    {
+      cell->get_dof_indices(cell_dofs);
+      cells.push_back(cell->material_id());
+      for (const auto& point : outline)
+        cells.push_back(cell_dofs[point.second]);
+    }
+  const MPI_Comm communicator        = dof_handler.get_triangulation().get_communicator();
+  const std::vector<Node<dim>> nodes = node_index.gather_on_root();
+  const auto cells_by_rank           = Utilities::MPI::gather(communicator, cells);
+  if (Utilities::MPI::this_mpi_process(communicator) != 0)
+    return;
+  std::map<types::global_dof_index, unsigned int> row_of_first_dof;
+  for (unsigned int row = 0; row < nodes.size(); ++row)
+    row_of_first_dof.emplace(nodes[row].dofs[0], row);
   std::ofstream file(directory + "/cells.csv");
   file << "body";
   for (unsigned int point = 0; point < outline.size(); ++point)
     file << ",node_" << point;
   file << '\n';
-  std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-  for (const auto& cell : dof_handler.active_cell_iterators())
-  {
-    cell->get_dof_indices(cell_dofs);
-    file << cell->material_id() + 1;
-    for (const auto& point : outline)
-      file << "," << row_of_first_dof.at(cell_dofs[point.second]);
-    file << '\n';
-  }
+  for (const auto& rank_cells : cells_by_rank)
+    for (std::size_t start = 0; start < rank_cells.size(); start += outline.size() + 1)
+    {
+      file << rank_cells[start] + 1;
+      for (unsigned int point = 0; point < outline.size(); ++point)
+        file << "," << row_of_first_dof.at(rank_cells[start + 1 + point]);
+      file << '\n';
+    }
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(FieldOutput)

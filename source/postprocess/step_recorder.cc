@@ -92,11 +92,10 @@ std::vector<std::string> StepRecorder<dim>::columns() const
 template <int dim>
 void StepRecorder<dim>::open()
 {
-  if (!is_root_rank)
-    return;
-  rows.attach_file(output.directory + "/history.csv");
   if (dim == 2)
-    field_output->write_cell_outlines(nodes.nodes());
+    field_output->write_cell_outlines(nodes);
+  if (is_root_rank)
+    rows.attach_file(output.directory + "/history.csv");
 }
 
 template <int dim>
@@ -178,26 +177,37 @@ void StepRecorder<dim>::write_fields(const unsigned int frame,
   if (!vtu_frame && !profile)
     return;
   TimerOutput::Scope scope(timer, "output");
-  // The fields whole on every rank (collective), for the frame's pieces and the root's profile.
-  const Vector<double> displacement = gather_whole(state.displacement),
-                       velocity     = gather_whole(state.velocity),
-                       acceleration = gather_whole(state.acceleration);
   const auto samples = surface_contact ? fields.pressure_samples(pressures, state.displacement)
                                        : std::vector<typename FieldOutput<dim>::PressureSample>();
   if (vtu_frame)
   {
-    const Vector<double> traction =
-        surface_contact ? fields.traction(pressures, state.displacement.size()) : Vector<double>();
-    field_output->write_fields(
-        frame, time, displacement, velocity, acceleration, surface_contact ? &traction : nullptr);
+    // Each rank writes its own cells, from the entries of its owned and ghost DoFs (collective).
+    const DistributedVector displacement = field_output->with_ghosts(state.displacement);
+    const DistributedVector traction =
+        surface_contact ? field_output->with_ghosts(fields.traction(pressures, state.displacement))
+                        : DistributedVector();
+    field_output->write_fields(frame,
+                               time,
+                               displacement,
+                               field_output->with_ghosts(state.velocity),
+                               field_output->with_ghosts(state.acceleration),
+                               surface_contact ? &traction : nullptr);
     if (surface_contact)
       field_output->write_contact_surface(frame, time, displacement, samples);
   }
-  if (profile && is_root_rank)
+  if (profile)
   {
-    field_output->write_profile(time, nodes.nodes(), displacement, velocity, acceleration);
-    if (surface_contact)
-      field_output->write_contact_pressure(time, samples);
+    // Rank 0 writes every node: the nodes and the fields gathered to it (collective).
+    const std::vector<Node<dim>> all_nodes = nodes.gather_on_root();
+    const Vector<double> displacement      = gather_on_root(state.displacement),
+                         velocity          = gather_on_root(state.velocity),
+                         acceleration      = gather_on_root(state.acceleration);
+    if (is_root_rank)
+    {
+      field_output->write_profile(time, all_nodes, displacement, velocity, acceleration);
+      if (surface_contact)
+        field_output->write_contact_pressure(time, samples);
+    }
   }
 }
 

@@ -2,24 +2,68 @@
 #include <dyncontact/simulation/body_discretization.h>
 #include <dyncontact/simulation/problem_fingerprint.h>
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <algorithm>
+#include <boost/serialization/vector.hpp>
 
 namespace dyncontact
 {
+namespace
+{
+template <int dim>
+void create_mesh(ProblemModel<dim>& model, parallel::shared::Triangulation<dim>& triangulation)
+{
+  model.create_triangulation(triangulation);
+}
+
+template <int dim>
+void create_mesh(ProblemModel<dim>& model,
+                 parallel::fullydistributed::Triangulation<dim>& triangulation)
+{
+  // Each rank reads the whole mesh (groups of one rank: the model learns its sizes and bodies from
+  // it) and keeps its own part; the whole mesh is freed before the DoFs are distributed.
+  const auto description =
+      TriangulationDescription::Utilities::create_description_from_triangulation_in_groups<dim,
+                                                                                           dim>(
+          [&model](Triangulation<dim>& whole) { model.create_triangulation(whole); },
+          [](Triangulation<dim>& whole, const MPI_Comm communicator, const unsigned int)
+          {
+            GridTools::partition_triangulation(Utilities::MPI::n_mpi_processes(communicator),
+                                               whole,
+                                               SparsityTools::Partitioner::zoltan);
+          },
+          triangulation.get_communicator(),
+          1);
+  triangulation.create_triangulation(description);
+  model.attach_manifolds(triangulation);
+}
+} // namespace
+
 template <int dim>
 BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
     : triangulation(MPI_COMM_WORLD), fe(FE_Q<dim>(model.element_degree()), dim),
       mapping(model.element_degree())
 {
-  model.create_triangulation(triangulation);
+  create_mesh(model, triangulation);
   mapping.initialize(MappingQ<dim>(model.element_degree()), triangulation);
   dof_handler.reinit(triangulation);
   dof_handler.distribute_dofs(fe);
   nodes      = std::make_unique<NodeIndex<dim>>(dof_handler, mapping);
   kinematics = model.create_kinematics();
   is_fixed_dof.assign(dof_handler.n_dofs(), false);
-  for (const auto dof : model.fixed_dofs(*nodes))
+  const std::vector<std::vector<types::global_dof_index>> fixed_by_rank =
+      Utilities::MPI::all_gather(MPI_COMM_WORLD, model.fixed_dofs(*nodes));
+  std::vector<types::global_dof_index> fixed_dofs;
+  for (const auto& part : fixed_by_rank)
+    fixed_dofs.insert(fixed_dofs.end(), part.begin(), part.end());
+  std::sort(fixed_dofs.begin(), fixed_dofs.end());
+  fixed_dofs.erase(std::unique(fixed_dofs.begin(), fixed_dofs.end()), fixed_dofs.end());
+  for (const auto dof : fixed_dofs)
   {
     constraints.add_line(dof);
     is_fixed_dof[dof] = true;
@@ -30,16 +74,11 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   loads = std::make_unique<SurfaceTractions<dim>>(
       dof_handler, mapping, *kinematics, model.surface_tractions());
   highest_frequency = bodies->highest_frequency_bound(is_fixed_dof);
-}
-
-template <int dim>
-std::string BodyDiscretization<dim>::node_checksum() const
-{
   std::vector<double> coordinates;
-  for (const auto& node : nodes->nodes())
+  for (const auto& node : nodes->gather_on_root())
     for (unsigned int d = 0; d < dim; ++d)
       coordinates.push_back(node.position[d]);
-  return checksum(coordinates);
+  node_positions_checksum = Utilities::MPI::broadcast(MPI_COMM_WORLD, checksum(coordinates), 0);
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(BodyDiscretization)

@@ -18,7 +18,7 @@ namespace
 /**
  * The pattern of the rows this rank writes: those of its cells and, if it owns the multiplier
  * rows, the constraint rows with the DoFs they couple to. Each such row gets its full pattern
- * from every cell touching it (all cells are known on every rank of the shared triangulation).
+ * from every cell touching it: this rank's own cells and its ghost cells (one layer around them).
  */
 template <int dim>
 DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,

@@ -1,4 +1,5 @@
-"""Checks the ParaView output of a 2D (axisymmetric) contact run in DIRECTORY (issue 15, A):
+"""Checks the ParaView output of a 2D (axisymmetric) contact run in DIRECTORY (issue 15, A), on
+any number of MPI ranks (each frame's pieces, one per rank, read as one):
 
  - solution.pvd and contact_surface.pvd list, with its history time, a frame for every row of
    history.csv with active pairs (frame files are numbered by history row);
@@ -97,7 +98,7 @@ def main(directory, stress_tolerance, nu, hertz_tolerance):
             time, name = frames[row]
             if abs(time - float(rows[row]["time"])) > 1e-12 * max(1., time):
                 fail(f"{name}: time {time} in the PVD, {rows[row]['time']} in history.csv")
-            piece = vtu.read(os.path.join(directory, name.replace(".pvtu", ".0.vtu")))
+            piece = vtu.read_record(os.path.join(directory, name))
             if set(piece["types"]) != {cell_type}:
                 fail(f"{name}: cell types {set(piece['types'])}, expected {cell_type}")
             absent = [f for f in fields if f not in piece["fields"]]

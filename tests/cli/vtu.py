@@ -1,6 +1,8 @@
 """Reads the VTU files deal.II writes (binary, zlib-compressed, inline base64), with the standard
-library only: the arrays of a piece by name, plus its points and cell types."""
+library only: the arrays of a piece by name, plus its points and cell types; and a .pvtu record's
+pieces (one per MPI rank) as one."""
 import base64
+import os
 import struct
 import xml.etree.ElementTree as ElementTree
 import zlib
@@ -36,6 +38,22 @@ def read(path):
         "types": _decode(piece.find("Cells/DataArray[@Name='types']")),
         "fields": fields,
     }
+
+
+def read_record(path):
+    """read() of every piece a .pvtu record lists, concatenated in its order (empty pieces, of
+    ranks without cells of this output, add nothing)."""
+    root = ElementTree.parse(path).getroot()
+    whole = {"points": [], "types": [], "fields": {}}
+    for source in root.iter("Piece"):
+        piece = read(os.path.join(os.path.dirname(path), source.get("Source")))
+        if not piece["points"]:
+            continue
+        whole["points"] += piece["points"]
+        whole["types"] += piece["types"]
+        for name, values in piece["fields"].items():
+            whole["fields"].setdefault(name, []).extend(values)
+    return whole
 
 
 def pvd_frames(path):

@@ -45,8 +45,9 @@ class ContactSurface
 {
 public:
   /**
-   * The faces of `dof_handler`'s cells with boundary id `boundary` (every cell of a shared
-   * triangulation); `nodes` indexes all nodes of the mesh. Throws InputError if no face has that
+   * The faces with boundary id `boundary` of the cells of every rank, in the order of the ranks
+   * and of each rank's cells: each rank finds those of its own cells (their nodes in `nodes`, this
+   * rank's NodeIndex) and sends them to all (collective). Throws InputError if no face has that
    * id.
    */
   ContactSurface(const DoFHandler<dim>& dof_handler,

@@ -32,6 +32,8 @@ public:
   unsigned int n_bodies() const override { return bodies.bodies.size(); }
   /** Reads the mesh; throws InputError if a body has no cells. */
   void create_triangulation(Triangulation<2>& triangulation) override;
+  /** The spheres' manifolds (gmsh_mesh.h, attach_manifolds()); after create_triangulation(). */
+  void attach_manifolds(Triangulation<2>& triangulation) const override;
   std::vector<BodyMaterial> body_materials() const override;
   std::unique_ptr<Kinematics<2>> create_kinematics() const override;
   /** Body b's `Initial velocity` at X; throws InputError if it is not finite there. */

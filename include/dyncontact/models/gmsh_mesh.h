@@ -126,6 +126,19 @@ MeshGeometry read_gmsh_mesh(const std::string& filename,
                             Triangulation<2>& triangulation);
 
 /**
+ * Attaches the manifolds of `geometry` to `triangulation`, whose cells and faces carry the manifold
+ * ids that read_gmsh_mesh() set (a copy of its mesh, or a distributed part of it): a
+ * SphericalManifold with the curve's id on each circular curve, and the
+ * TransfiniteInterpolationManifold (SphereMeshIds::interior_manifold) on the cells with a face on
+ * one; flat everywhere else (the axis, straight curves, the other cells and the interior faces).
+ * The transfinite manifold searches all cells it is attached to for every point it places (deal.II
+ * 9.4), so attached to every cell it made set-up quadratic in the number of cells (a 10^6-DoF mesh
+ * did not finish in 3 minutes); the cells away from the curves are bilinear, where it and the flat
+ * manifold place the same points (as in deal.II's step-65).
+ */
+void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulation);
+
+/**
  * The names of the parameters that the `.geo` file `geo_file` declares for setting from outside
  * (`DefineConstant[name = {default, Name "Parameters/name"}]`), sorted: the keys that
  * read_gmsh_mesh() accepts in `geo_parameters`. gmsh reads the file without meshing it; if it

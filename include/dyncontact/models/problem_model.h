@@ -32,8 +32,18 @@ public:
   /** Polynomial degree of the Lagrange elements (1: 2-node bars, 2: 9-node quadrilaterals). */
   virtual unsigned int element_degree() const = 0;
 
-  /** All bodies in one triangulation, material id b = body b (0-based). */
+  /**
+   * All bodies in one triangulation, material id b = body b (0-based), with the manifolds of
+   * curved boundaries attached. It is the whole mesh on every rank: BodyDiscretization keeps each
+   * rank's part of it (a distributed triangulation), whose manifolds attach_manifolds() attaches.
+   */
   virtual void create_triangulation(Triangulation<dim>& triangulation) = 0;
+
+  /**
+   * Attaches the manifolds of create_triangulation() to a part of its mesh (the cells and faces
+   * carry their manifold ids); the default attaches none (straight cells).
+   */
+  virtual void attach_manifolds(Triangulation<dim>& triangulation) const;
 
   /** Number of bodies. */
   virtual unsigned int n_bodies() const = 0;
@@ -53,7 +63,10 @@ public:
    * builds it). Throws InputError for a contact the model cannot describe.
    */
   virtual ContactDescription<dim> contact_description(const NodeIndex<dim>& nodes) const = 0;
-  /** DoFs held at zero for all time (e.g. u_r on the symmetry axis). The default: none. */
+  /**
+   * DoFs held at zero for all time (e.g. u_r on the symmetry axis), of the nodes given (this
+   * rank's: BodyDiscretization gathers them over the ranks). The default: none.
+   */
   virtual std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<dim>& nodes) const;
 
   /** Dead surface tractions (external loads). The default: none. */

@@ -18,7 +18,7 @@ namespace dyncontact
  * the nodal contact traction and the pressure samples of the contact surfaces. Reads the
  * ContactConstraints' pairs, active set, pair forces and gaps (which must outlive it); nothing
  * here feeds the solve. Vectors passed in and out are volume vectors over the displacement DoFs
- * (the state's: each rank its owned DoFs; the lumped mass and the traction whole); each query
+ * (the state's and the traction: each rank its owned DoFs; the lumped mass whole); each query
  * gathers what it reads onto the contact border (ContactBorder), so every query that takes a
  * DistributedVector is collective.
  */
@@ -93,10 +93,12 @@ public:
   double contact_radius(const DistributedVector& displacement) const;
 
   /**
-   * The nodal traction (`n_dofs` entries) -p n on body A and p n on body B of every pair,
-   * p = `pressures` (one per candidate pair) [force/area].
+   * The nodal traction -p n on body A and p n on body B of every pair, p = `pressures` (one per
+   * candidate pair) [force/area], on the owned DoFs of `layout` (a volume vector over the
+   * displacement DoFs).
    */
-  Vector<double> traction(const std::vector<double>& pressures, unsigned int n_dofs) const;
+  DistributedVector traction(const std::vector<double>& pressures,
+                             const DistributedVector& layout) const;
 
   /** Per candidate pair: its slave node, gap, multiplier, `pressures[k]` and active flag. */
   std::vector<typename FieldOutput<dim>::PressureSample>

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/base/linear_algebra.h>
 #include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/material/material.h>
@@ -50,16 +51,23 @@ public:
               std::string directory);
 
   /**
-   * Writes `solution_<frame>.<rank>.vtu` and `solution_<frame>.pvtu`, and updates `solution.pvd`
-   * with `time`. `contact_traction` (a nodal vector field, the traction the other body exerts; its
-   * magnitude is the contact pressure) is written if not null.
+   * `owned` (a volume vector over each rank's owned displacement DoFs) with the entries of this
+   * rank's ghost cells too, as the fields' writers read them. Collective.
+   */
+  DistributedVector with_ghosts(const DistributedVector& owned) const;
+
+  /**
+   * Writes `solution_<frame>.<rank>.vtu` (each rank its own cells) and `solution_<frame>.pvtu`,
+   * and updates `solution.pvd` with `time`. The fields are with_ghosts() vectors.
+   * `contact_traction` (a nodal vector field, the traction the other body exerts; its magnitude is
+   * the contact pressure) is written if not null. Collective.
    */
   void write_fields(unsigned int frame,
                     double time,
-                    const Vector<double>& displacement,
-                    const Vector<double>& velocity,
-                    const Vector<double>& acceleration,
-                    const Vector<double>* contact_traction);
+                    const DistributedVector& displacement,
+                    const DistributedVector& velocity,
+                    const DistributedVector& acceleration,
+                    const DistributedVector* contact_traction);
 
   /** One contact pair at one time, as written by write_contact_pressure(). */
   struct PressureSample
@@ -81,22 +89,25 @@ public:
 
   /**
    * Writes the faces of the contact surfaces as `contact_surface_<frame>.<rank>.vtu` and
-   * `contact_surface_<frame>.pvtu`, and updates `contact_surface.pvd`: displacement (to warp the
+   * `contact_surface_<frame>.pvtu`, and updates `contact_surface.pvd`: displacement (a
+   * with_ghosts() vector, to warp the
    * curves by), and per node of a pair the contact pressure [force/area], the gap [length] and
    * `active` (1 or 0); nodes of these faces without a pair get NaN. Does nothing without contact
    * surfaces.
    */
   void write_contact_surface(unsigned int frame,
                              double time,
-                             const Vector<double>& displacement,
+                             const DistributedVector& displacement,
                              const std::vector<PressureSample>& samples);
 
   /**
-   * Writes `cells.csv`: per cell its body (1-based) and the rows, in the node order of
-   * write_profile() (0-based), of the support points on its boundary in counter-clockwise order
-   * (8 for a 9-node quadrilateral), so that profiles can be drawn as deformed meshes. 2D only.
+   * Writes `cells.csv` (on rank 0): per cell its body (1-based) and the rows, in the node order of
+   * write_profile() with NodeIndex::gather_on_root()'s nodes (0-based), of the support points on
+   * its boundary in counter-clockwise order (8 for a 9-node quadrilateral), so that profiles can
+   * be drawn as deformed meshes. Cells in the order of the ranks, then of each rank's cells.
+   * Collective; 2D only.
    */
-  void write_cell_outlines(const std::vector<Node<dim>>& nodes) const;
+  void write_cell_outlines(const NodeIndex<dim>& nodes) const;
 
   /**
    * Writes `profile_t<time>.csv` with one row per node: body (1-based), reference coordinates,
@@ -129,5 +140,7 @@ private:
   std::vector<types::global_dof_index> scalar_dof;
   std::vector<std::pair<double, std::string>> pvd_records;
   std::vector<std::pair<double, std::string>> surface_pvd_records;
+  /** The owned DoFs and those of the ghost cells, the layout of with_ghosts(). */
+  std::shared_ptr<const Utilities::MPI::Partitioner> ghosted_layout;
 };
 } // namespace dyncontact

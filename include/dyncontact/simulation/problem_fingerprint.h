@@ -12,7 +12,7 @@ namespace dyncontact
 /**
  * What a checkpoint (checkpoint.bin) must share with the run that resumes it, so that the resumed
  * run continues the interrupted one's problem instead of mixing two:
- *  - the number of MPI ranks: the DoF numbering of the shared triangulation follows the
+ *  - the number of MPI ranks: the DoF numbering of the distributed triangulation follows the
  *    partition into ranks, so the saved vectors are only meaningful on as many ranks;
  *  - every parameter entry that defines the problem (RunParameters::problem_entries: materials,
  *    densities, loads, mesh file and its parameters, contact pairs and settings, integrator and
