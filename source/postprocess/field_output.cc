@@ -99,7 +99,13 @@ FieldOutput<dim>::FieldOutput(const DoFHandler<dim>& dof_handler,
   AssertThrow(fe.n_base_elements() == 1 && fe.element_multiplicity(0) == dim,
               ExcMessage("FieldOutput needs an FESystem of dim copies of one scalar element."));
   scalar_dof_handler.distribute_dofs(*scalar_fe);
-  scalar_dof.assign(dof_handler.n_dofs(), numbers::invalid_dof_index);
+  IndexSet relevant_dofs;
+  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
+  ghosted_layout = std::make_shared<Utilities::MPI::Partitioner>(
+      dof_handler.locally_owned_dofs(),
+      relevant_dofs,
+      dof_handler.get_triangulation().get_communicator());
+  scalar_dof.assign(relevant_dofs.n_elements(), numbers::invalid_dof_index);
   std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
   std::vector<types::global_dof_index> scalar_dofs(scalar_fe->n_dofs_per_cell());
   for (const auto& cell : dof_handler.active_cell_iterators())
@@ -112,14 +118,17 @@ FieldOutput<dim>::FieldOutput(const DoFHandler<dim>& dof_handler,
     scalar_cell->get_dof_indices(scalar_dofs);
     for (unsigned int i = 0; i < dofs.size(); ++i)
       if (fe.system_to_component_index(i).first == 0)
-        scalar_dof[dofs[i]] = scalar_dofs[fe.system_to_component_index(i).second];
+        scalar_dof[ghosted_layout->global_to_local(dofs[i])] =
+            scalar_dofs[fe.system_to_component_index(i).second];
   }
-  IndexSet relevant_dofs;
-  DoFTools::extract_locally_relevant_dofs(dof_handler, relevant_dofs);
-  ghosted_layout = std::make_shared<Utilities::MPI::Partitioner>(
-      dof_handler.locally_owned_dofs(),
-      relevant_dofs,
-      dof_handler.get_triangulation().get_communicator());
+}
+
+template <int dim>
+types::global_dof_index FieldOutput<dim>::scalar_dof_of(const types::global_dof_index dof) const
+{
+  return ghosted_layout->in_local_range(dof) || ghosted_layout->is_ghost_entry(dof)
+             ? scalar_dof[ghosted_layout->global_to_local(dof)]
+             : numbers::invalid_dof_index;
 }
 
 template <int dim>
@@ -192,7 +201,7 @@ void FieldOutput<dim>::write_contact_surface(const unsigned int frame,
   std::vector<bool> has_pair(scalar_dof_handler.n_dofs(), false);
   for (const auto& sample : samples)
   {
-    const types::global_dof_index dof = scalar_dof[sample.node.dofs[0]];
+    const types::global_dof_index dof = scalar_dof_of(sample.node.dofs[0]);
     if (dof == numbers::invalid_dof_index)
       continue; // a node of another rank's cells
     pressure[dof] = sample.pressure;
@@ -220,8 +229,8 @@ void FieldOutput<dim>::write_contact_surface(const unsigned int frame,
             if (std::all_of(face_dofs.begin(),
                             face_dofs.end(),
                             [&](const types::global_dof_index dof) {
-                              return scalar_dof[dof] == numbers::invalid_dof_index ||
-                                     has_pair[scalar_dof[dof]];
+                              return scalar_dof_of(dof) == numbers::invalid_dof_index ||
+                                     has_pair[scalar_dof_of(dof)];
                             }))
               faces.emplace(cell->active_cell_index(), f);
           }

@@ -136,11 +136,17 @@ private:
   /** The scalar element of the FESystem and its DoFs, for the nodal fields of the surfaces. */
   std::unique_ptr<FiniteElement<dim>> scalar_fe;
   DoFHandler<dim> scalar_dof_handler;
-  /** The scalar DoF of each DoF of component 0 (invalid for the other components). */
+  /**
+   * The scalar DoF of each of this rank's owned and ghost DoFs (by ghosted_layout's local index)
+   * of component 0; invalid for the other components.
+   */
   std::vector<types::global_dof_index> scalar_dof;
   std::vector<std::pair<double, std::string>> pvd_records;
   std::vector<std::pair<double, std::string>> surface_pvd_records;
   /** The owned DoFs and those of the ghost cells, the layout of with_ghosts(). */
   std::shared_ptr<const Utilities::MPI::Partitioner> ghosted_layout;
+
+  /** The scalar DoF of `dof` (scalar_dof); invalid if it is not this rank's or of component 0. */
+  types::global_dof_index scalar_dof_of(types::global_dof_index dof) const;
 };
 } // namespace dyncontact
