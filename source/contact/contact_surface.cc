@@ -1,4 +1,5 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/join_over_ranks.h>
 #include <dyncontact/contact/contact_surface.h>
 
 #include <deal.II/base/geometry_info.h>
@@ -8,7 +9,6 @@
 
 #include <Eigen/SparseCholesky>
 #include <algorithm>
-#include <boost/serialization/vector.hpp>
 #include <map>
 
 namespace dyncontact
@@ -123,10 +123,8 @@ ContactSurface<dim>::ContactSurface(const DoFHandler<dim>& dof_handler,
             local_faces.back().nodes.push_back(
                 nodes.node_of_first_dof(cell_dofs[fe.component_to_system_index(0, i)]));
         }
-  std::vector<FaceRecord<dim>> all_faces;
-  for (const auto& rank_faces :
-       Utilities::MPI::all_gather(dof_handler.get_triangulation().get_communicator(), local_faces))
-    all_faces.insert(all_faces.end(), rank_faces.begin(), rank_faces.end());
+  const std::vector<FaceRecord<dim>> all_faces =
+      join_over_ranks(dof_handler.get_triangulation().get_communicator(), local_faces);
   if (all_faces.empty())
     throw InputError("the mesh has no boundary faces with id " + std::to_string(boundary) +
                      ", so this contact surface is empty.");

@@ -1,11 +1,11 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/join_over_ranks.h>
 #include <dyncontact/discretization/node_index.h>
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/fe/fe.h>
 
 #include <algorithm>
-#include <boost/serialization/vector.hpp>
 #include <limits>
 #include <map>
 
@@ -72,10 +72,7 @@ std::vector<Node<dim>> NodeIndex<dim>::gather_on_root() const
   for (const Node<dim>& node : local_nodes)
     if (locally_owned_dofs.is_element(node.dofs[0]))
       owned.push_back(node);
-  const std::vector<std::vector<Node<dim>>> by_rank = Utilities::MPI::gather(communicator, owned);
-  std::vector<Node<dim>> all;
-  for (const auto& part : by_rank)
-    all.insert(all.end(), part.begin(), part.end());
+  std::vector<Node<dim>> all = join_on_root(communicator, owned);
   std::sort(all.begin(), all.end(), precedes<dim>);
   return all;
 }

@@ -1,4 +1,5 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/join_over_ranks.h>
 #include <dyncontact/postprocess/field_output.h>
 
 #include <deal.II/base/mpi.h>
@@ -7,7 +8,6 @@
 #include <deal.II/numerics/data_out_faces.h>
 
 #include <algorithm>
-#include <boost/serialization/vector.hpp>
 #include <cmath>
 #include <fstream>
 #include <iomanip>
@@ -336,7 +336,7 @@ void FieldOutput<dim>::write_cell_outlines(const NodeIndex<dim>& node_index) con
     }
   const MPI_Comm communicator        = dof_handler.get_triangulation().get_communicator();
   const std::vector<Node<dim>> nodes = node_index.gather_on_root();
-  const auto cells_by_rank           = Utilities::MPI::gather(communicator, cells);
+  const std::vector<types::global_dof_index> all_cells = join_on_root(communicator, cells);
   if (Utilities::MPI::this_mpi_process(communicator) != 0)
     return;
   std::map<types::global_dof_index, unsigned int> row_of_first_dof;
@@ -347,14 +347,13 @@ void FieldOutput<dim>::write_cell_outlines(const NodeIndex<dim>& node_index) con
   for (unsigned int point = 0; point < outline.size(); ++point)
     file << ",node_" << point;
   file << '\n';
-  for (const auto& rank_cells : cells_by_rank)
-    for (std::size_t start = 0; start < rank_cells.size(); start += outline.size() + 1)
-    {
-      file << rank_cells[start] + 1;
-      for (unsigned int point = 0; point < outline.size(); ++point)
-        file << "," << row_of_first_dof.at(rank_cells[start + 1 + point]);
-      file << '\n';
-    }
+  for (std::size_t start = 0; start < all_cells.size(); start += outline.size() + 1)
+  {
+    file << all_cells[start] + 1;
+    for (unsigned int point = 0; point < outline.size(); ++point)
+      file << "," << row_of_first_dof.at(all_cells[start + 1 + point]);
+    file << '\n';
+  }
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(FieldOutput)

@@ -1,4 +1,5 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/join_over_ranks.h>
 #include <dyncontact/simulation/body_discretization.h>
 #include <dyncontact/simulation/problem_fingerprint.h>
 
@@ -9,7 +10,6 @@
 #include <deal.II/grid/tria_description.h>
 
 #include <algorithm>
-#include <boost/serialization/vector.hpp>
 
 namespace dyncontact
 {
@@ -56,11 +56,8 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   nodes      = std::make_unique<NodeIndex<dim>>(dof_handler, mapping);
   kinematics = model.create_kinematics();
   is_fixed_dof.assign(dof_handler.n_dofs(), false);
-  const std::vector<std::vector<types::global_dof_index>> fixed_by_rank =
-      Utilities::MPI::all_gather(MPI_COMM_WORLD, model.fixed_dofs(*nodes));
-  std::vector<types::global_dof_index> fixed_dofs;
-  for (const auto& part : fixed_by_rank)
-    fixed_dofs.insert(fixed_dofs.end(), part.begin(), part.end());
+  std::vector<types::global_dof_index> fixed_dofs =
+      join_over_ranks(MPI_COMM_WORLD, model.fixed_dofs(*nodes));
   std::sort(fixed_dofs.begin(), fixed_dofs.end());
   fixed_dofs.erase(std::unique(fixed_dofs.begin(), fixed_dofs.end()), fixed_dofs.end());
   for (const auto dof : fixed_dofs)

@@ -1,4 +1,5 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/base/join_over_ranks.h>
 #include <dyncontact/solver/saddle_point_system.h>
 
 #include <deal.II/base/mpi.h>
@@ -356,9 +357,7 @@ std::optional<LowRankUpdate> SaddlePointSystem<dim>::low_rank_update_of_changes(
   if (Utilities::MPI::max(static_cast<int>(leading_block_changed), communicator) > 0)
     return {};
   // Every rank builds the whole U and V from all ranks' changes (a few per multiplier).
-  std::vector<MatrixChange> all_changes;
-  for (const auto& rank_changes : Utilities::MPI::all_gather(communicator, changes))
-    all_changes.insert(all_changes.end(), rank_changes.begin(), rank_changes.end());
+  const std::vector<MatrixChange> all_changes = join_over_ranks(communicator, changes);
   // The multipliers whose rows and columns hold the changes.
   std::vector<types::global_dof_index> multipliers;
   for (const MatrixChange& change : all_changes)
