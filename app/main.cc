@@ -3,9 +3,9 @@
 #include <dyncontact/base/command_line.h>
 #include <dyncontact/base/output_directory.h>
 #include <dyncontact/base/version.h>
-#include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/bar_model.h>
 #include <dyncontact/simulation/interruption.h>
+#include <dyncontact/simulation/mesh_model_factory.h>
 #include <dyncontact/simulation/parameter_reader.h>
 #include <dyncontact/simulation/run_record.h>
 #include <dyncontact/simulation/setup_check.h>
@@ -155,11 +155,7 @@ void run(const dyncontact::CommandLine& command_line, const std::vector<std::str
   if (parameters.problem.geometry == GeometryKind::bars)
     simulate<1>(reader, std::make_unique<BarModel>(parameters.geometry), command_line, arguments);
   else
-    simulate<2>(reader,
-                std::make_unique<AxisymmetricMeshModel>(
-                    parameters.mesh, parameters.bodies, parameters.contact.pairs),
-                command_line,
-                arguments);
+    simulate<2>(reader, create_mesh_model(parameters), command_line, arguments);
 }
 } // namespace
 

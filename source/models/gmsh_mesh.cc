@@ -345,19 +345,22 @@ struct CurveFaces
 };
 
 /**
- * Checks that the mesh lies in r >= 0, that every boundary face is in a physical curve, that the
- * faces of physical curve 1 lie on the axis r = 0 and that all boundary faces on r = 0 are in it
- * (so curve 1 may be absent only if no boundary face lies on r = 0). Returns the faces of every
- * other physical curve, by tag.
+ * Checks that every boundary face is in a physical curve, and for an axisymmetric mesh that it
+ * lies in r >= 0, that the faces of physical curve 1 lie on the axis r = 0 and that all boundary
+ * faces on r = 0 are in it (so curve 1 may be absent only if no boundary face lies on r = 0).
+ * Returns the faces of every other physical curve (every curve in plane strain), by tag.
  */
 std::map<types::boundary_id, CurveFaces> collect_curves(const std::string& filename,
-                                                        const Triangulation<2>& triangulation)
+                                                        const Triangulation<2>& triangulation,
+                                                        const MeshSection section)
 {
-  const double tolerance = 1e-8 * GridTools::diameter(triangulation);
-  for (const Point<2>& vertex : triangulation.get_vertices())
-    if (vertex[0] < -tolerance)
-      throw InputError(about(filename) + "it has a vertex at r = x = " + format_number(vertex[0]) +
-                       "; an axisymmetric mesh must lie in r >= 0.");
+  const bool axisymmetric = section == MeshSection::axisymmetric;
+  const double tolerance  = 1e-8 * GridTools::diameter(triangulation);
+  if (axisymmetric)
+    for (const Point<2>& vertex : triangulation.get_vertices())
+      if (vertex[0] < -tolerance)
+        throw InputError(about(filename) + "it has a vertex at r = x = " +
+                         format_number(vertex[0]) + "; an axisymmetric mesh must lie in r >= 0.");
 
   bool has_axis = false;
   std::set<unsigned int> curves_on_axis;
@@ -368,8 +371,8 @@ std::map<types::boundary_id, CurveFaces> collect_curves(const std::string& filen
       if (!face->at_boundary())
         continue;
       const types::boundary_id id = face->boundary_id();
-      const bool on_axis =
-          std::abs(face->vertex(0)[0]) <= tolerance && std::abs(face->vertex(1)[0]) <= tolerance;
+      const bool on_axis          = axisymmetric && std::abs(face->vertex(0)[0]) <= tolerance &&
+                           std::abs(face->vertex(1)[0]) <= tolerance;
       if (id == 0)
         throw InputError(about(filename) + "the boundary face of body " +
                          std::to_string(cell->material_id() + 1) + " from (" +
@@ -377,9 +380,12 @@ std::map<types::boundary_id, CurveFaces> collect_curves(const std::string& filen
                          format_number(face->vertex(0)[1]) + ") to (" +
                          format_number(face->vertex(1)[0]) + ", " +
                          format_number(face->vertex(1)[1]) +
-                         ") (r, z) belongs to no physical curve; each boundary face must be in "
-                         "physical curve 1 (axis) or in a physical curve t >= 2 of one body.");
-      if (id == SphereMeshIds::axis)
+                         (axisymmetric ? ") (r, z) belongs to no physical curve; each boundary "
+                                         "face must be in physical curve 1 (axis) or in a "
+                                         "physical curve t >= 2 of one body."
+                                       : ") (x, y) belongs to no physical curve; each boundary "
+                                         "face must be in a physical curve t >= 1 of one body."));
+      if (axisymmetric && id == SphereMeshIds::axis)
       {
         if (!on_axis)
           throw InputError(about(filename) + "physical curve " + std::to_string(id) +
@@ -416,7 +422,7 @@ std::map<types::boundary_id, CurveFaces> collect_curves(const std::string& filen
  * R^2, linear in z_c and R^2 - z_c^2). Its radius is not finite if no such circle fits (points at
  * one z).
  */
-SphereGeometry fit_circle(const std::vector<Point<2>>& points)
+SphereGeometry fit_circle_on_axis(const std::vector<Point<2>>& points)
 {
   // Work in z relative to the mean, which decouples the two unknowns.
   double mean_z = 0;
@@ -437,6 +443,39 @@ SphereGeometry fit_circle(const std::vector<Point<2>>& points)
   SphereGeometry circle;
   circle.centre = Point<2>(0, mean_z + shifted_centre_z);
   circle.radius = std::sqrt(mean_rho2 + shifted_centre_z * shifted_centre_z);
+  return circle;
+}
+
+/**
+ * The circle of any centre that fits `points` best (Kasa's algebraic fit: least squares in
+ * |p - c|^2 = R^2, linear in c and R^2 - |c|^2, about the points' mean). Its radius is not finite
+ * if no circle fits (collinear points).
+ */
+SphereGeometry fit_circle(const std::vector<Point<2>>& points)
+{
+  Point<2> mean;
+  for (const Point<2>& point : points)
+    mean += point / static_cast<double>(points.size());
+  // Normal equations of (x, y, 1) . (2 c_x, 2 c_y, R^2 - |c|^2) = x^2 + y^2 in shifted
+  // coordinates, where the mean of x and y vanishes and the 3x3 system splits into 2x2 and 1x1.
+  double s_xx = 0, s_xy = 0, s_yy = 0, s_xq = 0, s_yq = 0, mean_q = 0;
+  for (const Point<2>& point : points)
+  {
+    const Tensor<1, 2> d = point - mean;
+    const double q       = d.norm_square();
+    s_xx += d[0] * d[0];
+    s_xy += d[0] * d[1];
+    s_yy += d[1] * d[1];
+    s_xq += d[0] * q;
+    s_yq += d[1] * q;
+    mean_q += q / points.size();
+  }
+  const double determinant = s_xx * s_yy - s_xy * s_xy;
+  const Tensor<1, 2> shifted_centre({(s_yy * s_xq - s_xy * s_yq) / (2 * determinant),
+                                     (s_xx * s_yq - s_xy * s_xq) / (2 * determinant)});
+  SphereGeometry circle;
+  circle.centre = mean + shifted_centre;
+  circle.radius = std::sqrt(mean_q + shifted_centre.norm_square());
   return circle;
 }
 
@@ -476,17 +515,22 @@ std::tuple<Point<2>, Tensor<1, 2>, double> fit_line(const std::vector<Point<2>>&
  * best-fit line (the normal oriented out of the body), else a circle centred on the axis if every
  * vertex lies within 1e-6 R of the best-fit one. Throws InputError naming `filename` otherwise.
  */
-BoundaryCurve
-classify_curve(const std::string& filename, const types::boundary_id id, const CurveFaces& faces)
+BoundaryCurve classify_curve(const std::string& filename,
+                             const types::boundary_id id,
+                             const CurveFaces& faces,
+                             const MeshSection section)
 {
+  const bool axisymmetric = section == MeshSection::axisymmetric;
   const std::string curve = "physical curve " + std::to_string(id);
   if (faces.bodies.size() > 1)
   {
     std::set<unsigned int> bodies;
     for (const unsigned int body : faces.bodies)
       bodies.insert(body + 1);
-    throw InputError(about(filename) + curve + " bounds cells of bodies " + listed(bodies) +
-                     "; each physical curve other than the axis (1) must bound one body only.");
+    throw InputError(
+        about(filename) + curve + " bounds cells of bodies " + listed(bodies) +
+        (axisymmetric ? "; each physical curve other than the axis (1) must bound one body only."
+                      : "; each physical curve must bound one body only."));
   }
   BoundaryCurve classified;
   classified.id   = id;
@@ -502,8 +546,9 @@ classify_curve(const std::string& filename, const types::boundary_id id, const C
     return classified;
   }
 
-  const SphereGeometry circle = fit_circle(faces.vertices);
-  double circle_deviation     = 0;
+  const SphereGeometry circle =
+      axisymmetric ? fit_circle_on_axis(faces.vertices) : fit_circle(faces.vertices);
+  double circle_deviation = 0;
   for (const Point<2>& point : faces.vertices)
     circle_deviation =
         std::max(circle_deviation, std::abs(point.distance(circle.centre) - circle.radius));
@@ -514,14 +559,16 @@ classify_curve(const std::string& filename, const types::boundary_id id, const C
   }
   throw InputError(
       about(filename) + curve + " (of body " + std::to_string(classified.body + 1) +
-      ") is neither a circle centred on the axis r = 0 nor a straight line; the best-fit line "
-      "misses a vertex by " +
-      format_number(line_deviation) + " (allowed: 1e-6 of its length " + format_number(length) +
-      ")" +
+      (axisymmetric ? ") is neither a circle centred on the axis r = 0 nor a straight line; the "
+                      "best-fit line "
+                    : ") is neither a circle nor a straight line; the best-fit line ") +
+      "misses a vertex by " + format_number(line_deviation) + " (allowed: 1e-6 of its length " +
+      format_number(length) + ")" +
       (std::isfinite(circle.radius)
-           ? ", the best-fit circle, centre z = " + format_number(circle.centre[1]) +
-                 " and radius " + format_number(circle.radius) + ", by " +
-                 format_number(circle_deviation) + " (allowed: 1e-6 of the radius)"
+           ? ", the best-fit circle, centre (" + format_number(circle.centre[0]) + ", " +
+                 format_number(circle.centre[1]) + ")" + " and radius " +
+                 format_number(circle.radius) + ", by " + format_number(circle_deviation) +
+                 " (allowed: 1e-6 of the radius)"
            : "") +
       "; put its straight and circular parts (e.g. a striker's side and its spherical end) in "
       "physical curves of their own.");
@@ -584,7 +631,8 @@ void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulat
 
 MeshGeometry read_gmsh_mesh(const std::string& filename,
                             const std::map<std::string, double>& geo_parameters,
-                            Triangulation<2>& triangulation)
+                            Triangulation<2>& triangulation,
+                            const MeshSection section)
 {
   Assert(triangulation.n_cells() == 0, ExcMessage("The triangulation must be empty."));
 
@@ -610,8 +658,8 @@ MeshGeometry read_gmsh_mesh(const std::string& filename,
 
     MeshGeometry geometry;
     geometry.n_bodies = assign_bodies(filename, triangulation);
-    for (const auto& [id, faces] : collect_curves(filename, triangulation))
-      geometry.curves.push_back(classify_curve(filename, id, faces));
+    for (const auto& [id, faces] : collect_curves(filename, triangulation, section))
+      geometry.curves.push_back(classify_curve(filename, id, faces, section));
     set_manifold_ids(geometry, triangulation);
     attach_manifolds(geometry, triangulation);
     return geometry;

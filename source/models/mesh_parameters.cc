@@ -148,15 +148,19 @@ void BodyParameters::declare_parameters(ParameterHandler& prm)
       "monitor point",
       "",
       Patterns::Anything(),
-      "(r, z) [length] of the point whose nearest node of this body is reported in "
-      "the history as u_tip_<b>, v_tip_<b>, a_tip_<b> (axial components); it must lie "
-      "in the body or within one cell of it. Empty: the body's centroid on the axis "
-      "(0, z_c), the centre of a sphere.");
+      "(r, z), or (x, y) in plane strain, [length] of the point whose nearest node of "
+      "this body is reported in the history as u_tip_<b>, v_tip_<b>, a_tip_<b> (z or y "
+      "components); it must lie in the body or within one cell of it. Empty: the body's "
+      "centroid, (0, z_c) on the axis (the centre of a sphere), or (x_c, y_c).");
   prm.enter_subsection("Initial velocity");
   Functions::ParsedFunction<2>::declare_parameters(prm, 2);
   prm.leave_subsection();
   // Documented in the README: (T_r; T_z) of x = r, y = z, t, force per unit reference area.
   prm.enter_subsection("Surface traction");
+  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
+  prm.leave_subsection();
+  // Documented in the README: (b_r; b_z) of x = r, y = z, t, force per unit reference volume.
+  prm.enter_subsection("Body force");
   Functions::ParsedFunction<2>::declare_parameters(prm, 2);
   prm.leave_subsection();
 }
@@ -184,6 +188,7 @@ void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& 
   }
   initial_velocity = parse_function(prm, "Initial velocity", section);
   surface_traction = parse_function(prm, "Surface traction", section);
+  body_force       = parse_function(prm, "Body force", section);
 }
 
 void BodiesParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_bodies)
@@ -213,6 +218,14 @@ void BodiesParameters::parse_parameters(ParameterHandler& prm)
                                { bodies[body].parse_parameters(prm, "Bodies/" + name); });
   prm.leave_subsection();
 }
+bool FunctionExpression::is_zero() const
+{
+  for (const std::string& component : Utilities::split_string_list(expression, ';'))
+    if (!Patterns::Double().match(component) || Utilities::string_to_double(component) != 0.)
+      return false;
+  return true;
+}
+
 template <int dim>
 std::shared_ptr<Functions::ParsedFunction<dim>>
 FunctionExpression::create(const unsigned int n_components) const

@@ -10,12 +10,24 @@ std::vector<types::global_dof_index> ProblemModel<dim>::fixed_dofs(const NodeInd
 }
 
 template <int dim>
+std::vector<FixedBoundary> ProblemModel<dim>::fixed_boundaries() const
+{
+  return {};
+}
+
+template <int dim>
 void ProblemModel<dim>::attach_manifolds(Triangulation<dim>&) const
 {
 }
 
 template <int dim>
 std::vector<SurfaceTraction<dim>> ProblemModel<dim>::surface_tractions() const
+{
+  return {};
+}
+
+template <int dim>
+std::vector<BodyForce<dim>> ProblemModel<dim>::body_forces() const
 {
   return {};
 }

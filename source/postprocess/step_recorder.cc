@@ -74,6 +74,7 @@ std::vector<std::string> StepRecorder<dim>::columns() const
                                       "strain_energy",
                                       "total_energy",
                                       "algorithmic_energy",
+                                      "external_work",
                                       "max_penetration",
                                       "force_imbalance",
                                       "velocity_jump",
@@ -102,7 +103,7 @@ template <int dim>
 void StepRecorder<dim>::record(const Step& step,
                                const Measures& measures,
                                const StepState& state,
-                               const std::vector<double>& impulses)
+                               const typename BodyImpulses<dim>::Ledger& ledger)
 {
   std::vector<double> row = {step.time,
                              measures.contact_force,
@@ -113,6 +114,7 @@ void StepRecorder<dim>::record(const Step& step,
                              measures.strain_energy,
                              measures.kinetic_energy + measures.strain_energy,
                              measures.algorithmic_energy,
+                             ledger.external_work,
                              fields.max_penetration(state.displacement),
                              measures.force_imbalance,
                              measures.velocity_jump,
@@ -131,8 +133,9 @@ void StepRecorder<dim>::record(const Step& step,
   }
   const std::vector<double> tips = monitor_motions(state);
   for (unsigned int b = 0; b < monitors.size(); ++b)
-    row.insert(row.end(),
-               {measures.momenta[b], impulses[b], tips[3 * b], tips[3 * b + 1], tips[3 * b + 2]});
+    row.insert(
+        row.end(),
+        {measures.momenta[b], ledger.impulses[b], tips[3 * b], tips[3 * b + 1], tips[3 * b + 2]});
   rows.add_row(row);
   write_fields(rows.n_rows() - 1, step.nominal_step, step.time, state, pressures);
 }

@@ -4,6 +4,7 @@
 #include <dyncontact/simulation/problem_fingerprint.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
@@ -56,8 +57,17 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   nodes      = std::make_unique<NodeIndex<dim>>(dof_handler, mapping);
   kinematics = model.create_kinematics();
   is_fixed_dof.assign(dof_handler.n_dofs(), false);
+  std::vector<types::global_dof_index> rank_fixed_dofs = model.fixed_dofs(*nodes);
+  for (const FixedBoundary& boundary : model.fixed_boundaries())
+  {
+    ComponentMask mask(dim, false);
+    for (const unsigned int component : boundary.components)
+      mask.set(component, true);
+    for (const auto dof : DoFTools::extract_boundary_dofs(dof_handler, mask, {boundary.boundary}))
+      rank_fixed_dofs.push_back(dof);
+  }
   std::vector<types::global_dof_index> fixed_dofs =
-      join_over_ranks(MPI_COMM_WORLD, model.fixed_dofs(*nodes));
+      join_over_ranks(MPI_COMM_WORLD, rank_fixed_dofs);
   std::sort(fixed_dofs.begin(), fixed_dofs.end());
   fixed_dofs.erase(std::unique(fixed_dofs.begin(), fixed_dofs.end()), fixed_dofs.end());
   for (const auto dof : fixed_dofs)
@@ -68,8 +78,8 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   constraints.close();
   bodies = std::make_unique<ElasticBodies<dim>>(
       dof_handler, mapping, *kinematics, model.body_materials(), &constraints);
-  loads = std::make_unique<SurfaceTractions<dim>>(
-      dof_handler, mapping, *kinematics, model.surface_tractions());
+  loads = std::make_unique<ExternalLoads<dim>>(
+      dof_handler, mapping, *kinematics, model.surface_tractions(), model.body_forces());
   highest_frequency = bodies->highest_frequency_bound(is_fixed_dof);
   std::vector<double> coordinates;
   for (const auto& node : nodes->gather_on_root())

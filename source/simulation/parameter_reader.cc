@@ -88,12 +88,16 @@ std::string readable_entry_error(const std::string& message, const std::string& 
     std::replace(path.begin(), path.end(), '.', '/');
     const std::string name = path.substr(path.rfind('/') + 1);
     const std::string why =
-        name == "Geometry"                   ? "it is for Problem/geometry = bars"
-        : name == "Mesh" || name == "Bodies" ? "it is for Problem/geometry = axisymmetric mesh"
-        : name.rfind("Bar ", 0) == 0         ? "there are only Geometry/number of bars bars"
-        : name.rfind("Body ", 0) == 0        ? "there are only Bodies/number of bodies bodies"
-        : name.rfind("Pair ", 0) == 0        ? "there are only Contact/number of pairs pairs"
-                                             : "no such subsection is declared";
+        name == "Geometry" ? "it is for Problem/geometry = bars"
+        : name == "Mesh" || name == "Bodies" || name == "Boundary"
+            ? "it is for Problem/geometry = axisymmetric mesh or plane strain mesh"
+        : name.rfind("Bar ", 0) == 0  ? "there are only Geometry/number of bars bars"
+        : name.rfind("Body ", 0) == 0 ? "there are only Bodies/number of bodies bodies"
+        : name.rfind("Pair ", 0) == 0 ? "there are only Contact/number of pairs pairs"
+        : name.rfind("Symmetry ", 0) == 0
+            ? "there are only Boundary/number of symmetry planes planes"
+        : name.rfind("Support ", 0) == 0 ? "there are only Boundary/number of supports supports"
+                                         : "no such subsection is declared";
     return "line " + std::string(match[1]) + ": subsection '" + path + "' is not taken: " + why +
            " (dyncontact --print-parameters bars|mesh prints what each kind of problem takes).";
   }
@@ -191,6 +195,8 @@ struct ProblemSize
   unsigned int n_bars;
   unsigned int n_bodies;
   unsigned int n_pairs;
+  unsigned int n_symmetry_planes = 0;
+  unsigned int n_supports        = 0;
 };
 
 /**
@@ -210,6 +216,8 @@ void declare_all(ParameterHandler& prm, const std::optional<ProblemSize>& size)
   {
     MeshParameters::declare_parameters(prm);
     BodiesParameters::declare_parameters(prm, size ? size->n_bodies : 1);
+    BoundaryParameters::declare_parameters(
+        prm, size ? size->n_symmetry_planes : 1, size ? size->n_supports : 1);
   }
   OutputParameters::declare_parameters(prm);
 }
@@ -256,6 +264,10 @@ ProblemSize read_problem_size(const std::string& filename,
   size_prm.enter_subsection("Contact");
   size_prm.declare_entry("number of pairs", "0", Patterns::Integer(0, 100));
   size_prm.leave_subsection();
+  size_prm.enter_subsection("Boundary");
+  size_prm.declare_entry("number of symmetry planes", "0", Patterns::Integer(0, 10));
+  size_prm.declare_entry("number of supports", "0", Patterns::Integer(0, 100));
+  size_prm.leave_subsection();
   parse_file(size_prm, filename, true);
   for (const auto& text : overrides)
     apply_override(size_prm, text, true);
@@ -270,6 +282,10 @@ ProblemSize read_problem_size(const std::string& filename,
   size_prm.leave_subsection();
   size_prm.enter_subsection("Contact");
   size.n_pairs = size_prm.get_integer("number of pairs");
+  size_prm.leave_subsection();
+  size_prm.enter_subsection("Boundary");
+  size.n_symmetry_planes = size_prm.get_integer("number of symmetry planes");
+  size.n_supports        = size_prm.get_integer("number of supports");
   size_prm.leave_subsection();
   if (size.geometry == GeometryKind::bars && size.n_pairs > 0)
     throw InputError("Contact/number of pairs = " + std::to_string(size.n_pairs) +
@@ -324,6 +340,7 @@ ParameterReader::ParameterReader(const std::string& filename,
       run_parameters.mesh.parse_parameters(prm,
                                            std::filesystem::path(filename).parent_path().string());
       run_parameters.bodies.parse_parameters(prm);
+      run_parameters.boundary.parse_parameters(prm);
     }
     run_parameters.output.parse_parameters(prm);
   }

@@ -5,8 +5,17 @@ namespace dyncontact
 const NameTable<GeometryKind>& geometry_names()
 {
   static const NameTable<GeometryKind> names{
-      {"bars", GeometryKind::bars}, {"axisymmetric mesh", GeometryKind::axisymmetric_mesh}};
+      {"bars", GeometryKind::bars},
+      {"axisymmetric mesh", GeometryKind::axisymmetric_mesh},
+      {"plane strain mesh", GeometryKind::plane_strain_mesh}};
   return names;
+}
+
+MeshSection mesh_section(const GeometryKind geometry)
+{
+  Assert(geometry != GeometryKind::bars, ExcMessage("Bars have no mesh section."));
+  return geometry == GeometryKind::plane_strain_mesh ? MeshSection::plane_strain
+                                                     : MeshSection::axisymmetric;
 }
 
 void ProblemParameters::declare_parameters(ParameterHandler& prm)
@@ -17,7 +26,9 @@ void ProblemParameters::declare_parameters(ParameterHandler& prm)
                     Patterns::Selection(geometry_names().selection()),
                     "Kind of problem. bars: 1D bars on the x axis (subsection Geometry). "
                     "axisymmetric mesh: bodies of revolution in the (r, z) half plane from a gmsh "
-                    "mesh, 9-node quadrilaterals (subsections Mesh and Bodies).");
+                    "mesh, 9-node quadrilaterals (subsections Mesh and Bodies). plane strain "
+                    "mesh: cross-sections of long bodies in the (x, y) plane, unit thickness, "
+                    "from a gmsh mesh as for axisymmetric mesh but without an axis.");
   prm.leave_subsection();
 }
 

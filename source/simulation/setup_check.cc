@@ -1,6 +1,6 @@
 #include <dyncontact/base/output_directory.h>
-#include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/bar_model.h>
+#include <dyncontact/simulation/mesh_model_factory.h>
 #include <dyncontact/simulation/setup_check.h>
 #include <dyncontact/simulation/simulation.h>
 
@@ -32,10 +32,7 @@ void check_run_setup(const RunParameters& parameters, std::ostream& log)
   }
   else
   {
-    prepare<2>(parameters,
-               std::make_unique<AxisymmetricMeshModel>(
-                   parameters.mesh, parameters.bodies, parameters.contact.pairs),
-               log);
+    prepare<2>(parameters, create_mesh_model(parameters), log);
   }
 }
 } // namespace dyncontact

@@ -106,7 +106,7 @@ void Simulation<dim>::record(const Measures& measures,
   recorder->record({time, size, nominal_step, linear_solves, cuts},
                    measures,
                    problem->stepper->state(),
-                   problem->impulses->ledger().impulses);
+                   problem->impulses->ledger());
 }
 
 template <int dim>

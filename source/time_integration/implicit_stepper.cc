@@ -7,7 +7,7 @@ template <int dim>
 ImplicitStepper<dim>::ImplicitStepper(const GeneralizedAlpha& integrator,
                                       const Vector<double>& lumped_mass,
                                       const std::vector<bool>& is_fixed_dof,
-                                      const SurfaceTractions<dim>& loads,
+                                      const ExternalLoads<dim>& loads,
                                       ContactConstraints<dim>& contact,
                                       const ContactDynamics<dim>& dynamics,
                                       ContactNewtonSolver<dim>& solver)
@@ -27,7 +27,7 @@ void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
   DistributedVector internal_force;
   bodies.assemble_internal_force(current.displacement, internal_force, nullptr); // Q(u_0 = 0)
   current.internal_force.copy_locally_owned_data_from(internal_force);
-  copy_owned_entries(loads.force(0.), current.external_force);
+  copy_owned_entries(loads.force(0., mass), current.external_force);
   for_each_owned_row(current.velocity,
                      [&](const types::global_dof_index i, const unsigned int j)
                      {
@@ -69,13 +69,13 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
   border.scatter(border_acceleration, start_acceleration);
   border.scatter(border_predictor, predictor);
   contact.set_reference_gaps(dynamics.reference_gaps(contact, start, border_predictor));
-  copy_owned_entries(loads.force(time), current.external_force);
+  copy_owned_entries(loads.force(time, mass), current.external_force);
   // A dissipative member balances at t_{n+1-alpha_f}: the solve takes W_eff (GeneralizedAlpha).
   DistributedVector effective_force;
   if (integrator.family() != IntegratorFamily::newmark)
   {
     load_at_balance.reinit(before.displacement, true);
-    copy_owned_entries(loads.force(integrator.load_time(time)), load_at_balance);
+    copy_owned_entries(loads.force(integrator.load_time(time), mass), load_at_balance);
     DistributedVector old_inertia_force(start_acceleration);
     for_each_owned_row(old_inertia_force,
                        [&](const types::global_dof_index i, const unsigned int j) {

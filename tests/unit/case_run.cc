@@ -1,8 +1,8 @@
 #include "case_run.h"
 
 #include <dyncontact/base/output_directory.h>
-#include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/bar_model.h>
+#include <dyncontact/simulation/mesh_model_factory.h>
 
 #include <filesystem>
 #include <fstream>
@@ -105,11 +105,7 @@ MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string
 {
   MeshRun run;
   run.parameters = test_parameters(prm_file, overrides);
-  run.simulation =
-      run_quietly<2>(run.parameters,
-                     std::make_unique<AxisymmetricMeshModel>(
-                         run.parameters.mesh, run.parameters.bodies, run.parameters.contact.pairs),
-                     run.files);
+  run.simulation = run_quietly<2>(run.parameters, create_mesh_model(run.parameters), run.files);
   return run;
 }
 

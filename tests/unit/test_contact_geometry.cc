@@ -2,7 +2,7 @@
 // from any time stepping: the pair normal n = (n_A - n_B) / |n_A - n_B| of every pair, off-axis
 // ones included, against the exact normals of the configuration.
 #include <dyncontact/contact/contact_factory.h>
-#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/mesh_model.h>
 #include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -26,7 +26,7 @@ TEST(NodeToNodeContact, PairNormalsOfMirroredSpheresAreTheAxisDirection)
 {
   const RunParameters parameters =
       ParameterReader(source_path("prm/spheres_rho0.001.prm"), paper_coarse_spheres()).parameters();
-  AxisymmetricMeshModel model(parameters.mesh, parameters.bodies);
+  MeshModel model(parameters.mesh, parameters.bodies);
   Triangulation<2> triangulation;
   model.create_triangulation(triangulation);
   DoFHandler<2> dof_handler(triangulation);

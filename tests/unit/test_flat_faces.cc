@@ -7,7 +7,7 @@
 //  - Runs: the rod impact against 1D wave theory (shared case 21), and node-to-segment between
 //    the flat ends against node-to-node and energy conservation (shared case 22).
 #include <dyncontact/contact/contact_factory.h>
-#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/mesh_model.h>
 #include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -63,7 +63,7 @@ struct MeshSetUp
   }
 
   RunParameters parameters;
-  AxisymmetricMeshModel model;
+  MeshModel model;
   Triangulation<2> triangulation;
   DoFHandler<2> dof_handler;
   const FESystem<2> fe;

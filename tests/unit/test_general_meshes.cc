@@ -16,8 +16,8 @@
 //  - the model on the sphere and the block: no Hertz reference, the contact search radius;
 //  - the new parameters' range checks and bad boundary curves, one line of InputError each.
 // The second-order export of sphere_on_block.geo is read in test_gmsh_mesh.cc.
-#include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/gmsh_mesh.h>
+#include <dyncontact/models/mesh_model.h>
 #include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/dofs/dof_handler.h>
@@ -361,7 +361,7 @@ TEST(GeneralMeshes, SphereOnBlockModel)
                                                     "Mesh/geo parameters=",
                                                     "Contact/discretization=node-to-segment"})
                                        .parameters();
-  AxisymmetricMeshModel model(parameters.mesh, parameters.bodies);
+  MeshModel model(parameters.mesh, parameters.bodies);
   Triangulation<2> triangulation;
   model.create_triangulation(triangulation);
   EXPECT_FALSE(model.hertz_reference());
@@ -570,7 +570,7 @@ TEST(GeneralMeshes, SphereOnBlockHasSphereOnFlatReferences)
           source_path("prm/sphere_on_block.prm"),
           {"Mesh/geo parameters=Gap: 2, Refinement: 0, PoleGrading: 10, CoreOffset: 0.3"})
           .parameters();
-  AxisymmetricMeshModel model(parameters.mesh, parameters.bodies, parameters.contact.pairs);
+  MeshModel model(parameters.mesh, parameters.bodies, parameters.contact.pairs);
   Triangulation<2> triangulation;
   model.create_triangulation(triangulation);
   const auto hertz = model.hertz_reference();
@@ -656,7 +656,7 @@ TEST(GeneralMeshes, SphericalEndOnPlateHasTheHertzReferenceOfItsRadiusAndBodyMas
                          "Bodies/Body 2/monitor point=",
                          "Bodies/Body 1/Initial velocity/Function expression=0; 0"})
             .parameters();
-    return std::make_unique<AxisymmetricMeshModel>(
+    return std::make_unique<MeshModel>(
         parameters.mesh, parameters.bodies, parameters.contact.pairs);
   };
   const auto model = model_of(directory.write("shell_down.geo", plate_and_shell_geo(1.25, true)));

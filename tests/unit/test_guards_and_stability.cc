@@ -2,8 +2,8 @@
 // items 2-4; its cases 19, 20, 25 and 26 are the input files in tests/cases/): a step the check
 // accepts must not blow up, the step it prints must be accepted, and a guard must not stop a
 // valid run on round-off or on its own bookkeeping.
-#include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/bar_model.h>
+#include <dyncontact/models/mesh_model.h>
 
 #include <algorithm>
 #include <cmath>
@@ -33,10 +33,10 @@ std::string preparation_error(const std::string& prm_file,
     if (parameters.problem.geometry == GeometryKind::bars)
       Simulation<1>(parameters, std::make_unique<BarModel>(parameters.geometry), log).prepare();
     else
-      Simulation<2>(parameters,
-                    std::make_unique<AxisymmetricMeshModel>(
-                        parameters.mesh, parameters.bodies, parameters.contact.pairs),
-                    log)
+      Simulation<2>(
+          parameters,
+          std::make_unique<MeshModel>(parameters.mesh, parameters.bodies, parameters.contact.pairs),
+          log)
           .prepare();
   }
   catch (const InputError& error)

@@ -3,8 +3,8 @@
 // a single circular face; apart from any time stepping.
 #include <dyncontact/contact/node_to_segment_contact.h>
 #include <dyncontact/contact/quadratic_face.h>
-#include <dyncontact/models/axisymmetric_mesh_model.h>
 #include <dyncontact/models/gmsh_mesh.h>
+#include <dyncontact/models/mesh_model.h>
 #include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/base/quadrature_lib.h>
@@ -93,7 +93,7 @@ struct TwoSpheres
   }
 
   RunParameters parameters;
-  AxisymmetricMeshModel model;
+  MeshModel model;
   Triangulation<2> triangulation;
   DoFHandler<2> dof_handler;
   const FESystem<2> fe;

@@ -1,7 +1,7 @@
 // Acceptance tests of the paper's modified Newmark on non-matching meshes (node-to-segment pairs):
 // the identical spheres of section 6.4 at rho = 0.001, body 2 meshed with more divisions than
 // body 1 (meshes/two_spheres_nonmatching.geo), so that no slave node faces a master node.
-#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/mesh_model.h>
 #include <dyncontact/reference/impact_measures.h>
 #include <dyncontact/simulation/parameter_reader.h>
 
@@ -141,8 +141,7 @@ TEST(NonMatchingImpact, DissimilarSpheresFollowTheFiniteSphereLawNotHertz)
       "Mesh/geo parameters=Refinement: 0, PoleGrading: 10, CoreOffset: 0.3",
       "Output/vtu interval=0"};
   const MeshRun run = run_mesh_case("prm/dissimilar_spheres.prm", coarse);
-  AxisymmetricMeshModel model(
-      run.parameters.mesh, run.parameters.bodies, run.parameters.contact.pairs);
+  MeshModel model(run.parameters.mesh, run.parameters.bodies, run.parameters.contact.pairs);
   Triangulation<2> mesh;
   model.create_triangulation(mesh);
   const auto hertz = model.hertz_reference();

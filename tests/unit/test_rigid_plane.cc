@@ -2,7 +2,7 @@
 // the plane is the lower half of two identical spheres striking each other, whose symmetry plane
 // is rigid and frictionless; the two runs must agree to round-off.
 #include <dyncontact/base/global.h>
-#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/mesh_model.h>
 #include <dyncontact/simulation/parameter_reader.h>
 
 #include <deal.II/grid/tria.h>
@@ -99,8 +99,8 @@ TEST(RigidPlane, ReferencesAreThoseOfTheMirroredPair)
                                   .parameters();
   const RunParameters pair =
       ParameterReader(source_path("prm/spheres_rho0.001.prm"), paper_coarse_spheres()).parameters();
-  AxisymmetricMeshModel plane_model(plane.mesh, plane.bodies, plane.contact.pairs);
-  AxisymmetricMeshModel pair_model(pair.mesh, pair.bodies, pair.contact.pairs);
+  MeshModel plane_model(plane.mesh, plane.bodies, plane.contact.pairs);
+  MeshModel pair_model(pair.mesh, pair.bodies, pair.contact.pairs);
   Triangulation<2> plane_mesh, pair_mesh;
   plane_model.create_triangulation(plane_mesh);
   pair_model.create_triangulation(pair_mesh);

@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dyncontact/base/global.h>
+#include <dyncontact/models/mesh_section.h>
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
@@ -44,10 +45,13 @@ constexpr types::boundary_id surface(const unsigned int body)
 constexpr types::manifold_id interior_manifold = 0;
 } // namespace SphereMeshIds
 
-/** A circle centred on the axis in the (r, z) plane, as measured from a mesh: a sphere. */
+/**
+ * A circle as measured from a mesh: in an axisymmetric mesh centred on the axis, a sphere; in a
+ * plane-strain mesh centred anywhere, a cylinder.
+ */
 struct SphereGeometry
 {
-  /** The centre, on the axis: (0, z_c) [length]. */
+  /** The centre [length]: on the axis, (0, z_c), in an axisymmetric mesh. */
   Point<2> centre;
 
   /** The radius [length]. */
@@ -59,7 +63,8 @@ struct BoundaryCurve
 {
   types::boundary_id id; ///< the gmsh physical curve tag (>= 2), also its boundary id
   unsigned int body;     ///< 0-based body whose cells it bounds
-  std::optional<SphereGeometry> circle; ///< set if it is an arc of a circle centred on the axis
+  /// set if it is an arc of a circle (centred on the axis in an axisymmetric mesh)
+  std::optional<SphereGeometry> circle;
   /// set if it is straight: a point on it [length] and its unit normal pointing out of the body
   std::optional<std::pair<Point<2>, Tensor<1, 2>>> line;
 };
@@ -78,8 +83,11 @@ struct MeshGeometry
 };
 
 /**
- * Reads an axisymmetric mesh of one or more bodies, all quadrilaterals, into `triangulation`
- * (which must be empty) and returns its bodies and boundary curves.
+ * Reads a 2D mesh of one or more bodies, all quadrilaterals, into `triangulation` (which must be
+ * empty) and returns its bodies and boundary curves. `section` says what the mesh stands for: the
+ * rules below are those of an axisymmetric mesh; a plane-strain mesh may lie anywhere in the
+ * (x, y) plane, has no axis (every physical curve t >= 1 is a boundary curve of one body), and its
+ * circles may have any centre.
  *
  * A `.geo` file is meshed in 2D by the gmsh library (linear quadrilaterals: deal.II's Q2 mapping
  * with the attached manifolds supplies the curvature) after its parameters are set: every key of
@@ -123,7 +131,8 @@ struct MeshGeometry
  */
 MeshGeometry read_gmsh_mesh(const std::string& filename,
                             const std::map<std::string, double>& geo_parameters,
-                            Triangulation<2>& triangulation);
+                            Triangulation<2>& triangulation,
+                            MeshSection section = MeshSection::axisymmetric);
 
 /**
  * Attaches the manifolds of `geometry` to `triangulation`, whose cells and faces carry the manifold

@@ -40,6 +40,9 @@ struct FunctionExpression
    */
   template <int dim>
   std::shared_ptr<Functions::ParsedFunction<dim>> create(unsigned int n_components) const;
+
+  /** Whether every component of the expression is the number 0 (e.g. "0; 0"). */
+  bool is_zero() const;
 };
 
 /** One body of a mesh-based problem. Subsection `Bodies/Body <b>`. */
@@ -49,13 +52,16 @@ struct BodyParameters
   double youngs_modulus;
   double poissons_ratio;
   double density;
-  /// the coordinates (r, z) of the point whose nearest node is reported as u_tip_<b> etc.;
-  /// empty: the body's centroid (0, z_c)
+  /// the coordinates (r, z), or (x, y) in plane strain, of the point whose nearest node is
+  /// reported as u_tip_<b> etc.; empty: the body's centroid ((0, z_c) in axisymmetry)
   std::vector<double> monitor_point;
   /// the initial velocity (v_r; v_z) [length/time] of x = r, y = z, t
   FunctionExpression initial_velocity;
   /// the dead surface traction (T_r; T_z) [force/reference area] of x = r, y = z, t
   FunctionExpression surface_traction;
+  /// the dead body force (b_r; b_z) [force/reference volume] of x = r, y = z, t: rho g for
+  /// gravity g
+  FunctionExpression body_force;
 
   static void declare_parameters(ParameterHandler& prm);
   void parse_parameters(ParameterHandler& prm, const std::string& section);

@@ -3,9 +3,9 @@
 #include <dyncontact/base/global.h>
 #include <dyncontact/contact/contact_description.h>
 #include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/discretization/external_loads.h>
 #include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/node_index.h>
-#include <dyncontact/discretization/surface_tractions.h>
 #include <dyncontact/postprocess/history.h>
 
 #include <deal.II/grid/tria.h>
@@ -17,6 +17,13 @@
 
 namespace dyncontact
 {
+/** Displacement components held at zero for all time on the faces of one boundary id. */
+struct FixedBoundary
+{
+  types::boundary_id boundary;
+  std::vector<unsigned int> components; ///< 0 .. dim - 1
+};
+
 /**
  * What distinguishes one kind of problem (bars, spheres, ...) from another for the one
  * dim-templated Simulation: the mesh with body ids, the bodies' materials and kinematics, the
@@ -69,8 +76,18 @@ public:
    */
   virtual std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<dim>& nodes) const;
 
+  /**
+   * Boundaries with displacement components held at zero for all time (symmetry planes,
+   * supports), besides fixed_dofs(); valid after create_triangulation(). The default: none.
+   * Throws InputError for a boundary the mesh cannot hold so.
+   */
+  virtual std::vector<FixedBoundary> fixed_boundaries() const;
+
   /** Dead surface tractions (external loads). The default: none. */
   virtual std::vector<SurfaceTraction<dim>> surface_tractions() const;
+
+  /** Dead body forces (external loads, e.g. gravity). The default: none. */
+  virtual std::vector<BodyForce<dim>> body_forces() const;
 
   /** One node per body ("tip", its contact node) whose u, v, a the history reports. */
   virtual std::vector<Node<dim>> monitor_nodes(const NodeIndex<dim>& nodes) const = 0;

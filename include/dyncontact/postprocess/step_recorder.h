@@ -4,6 +4,7 @@
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/models/problem_model.h>
+#include <dyncontact/postprocess/body_impulses.h>
 #include <dyncontact/postprocess/contact_fields.h>
 #include <dyncontact/postprocess/field_output.h>
 #include <dyncontact/postprocess/history.h>
@@ -66,13 +67,14 @@ public:
   void open();
 
   /**
-   * Appends the row of `state` (its `measures`; `impulses` [force time] per body) to the history,
-   * and writes the VTU frame (numbered by the row) and profiles scheduled at it. Collective.
+   * Appends the row of `state` (its `measures`; from `ledger` the impulses [force time] per body
+   * and the external work [energy] since t = 0) to the history, and writes the VTU frame
+   * (numbered by the row) and profiles scheduled at it. Collective.
    */
   void record(const Step& step,
               const Measures& measures,
               const StepState& state,
-              const std::vector<double>& impulses);
+              const typename BodyImpulses<dim>::Ledger& ledger);
 
   /**
    * Writes the reference solution at the recorded times and the run's summary (rank 0), marked

@@ -2,9 +2,9 @@
 
 #include <dyncontact/base/global.h>
 #include <dyncontact/discretization/elastic_bodies.h>
+#include <dyncontact/discretization/external_loads.h>
 #include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/node_index.h>
-#include <dyncontact/discretization/surface_tractions.h>
 #include <dyncontact/models/problem_model.h>
 
 #include <deal.II/distributed/fully_distributed_tria.h>
@@ -59,7 +59,7 @@ public:
   AffineConstraints<double> constraints;
   std::vector<bool> is_fixed_dof; ///< per DoF of the mesh: constrained
   std::unique_ptr<ElasticBodies<dim>> bodies;
-  std::unique_ptr<SurfaceTractions<dim>> loads;
+  std::unique_ptr<ExternalLoads<dim>> loads;
   /** ElasticBodies::highest_frequency_bound() of the bodies with their fixed DoFs [1/time]. */
   double highest_frequency = 0.;
 

@@ -4,7 +4,9 @@
 #include <dyncontact/base/name_table.h>
 #include <dyncontact/contact/contact_parameters.h>
 #include <dyncontact/models/bar_parameters.h>
+#include <dyncontact/models/boundary_parameters.h>
 #include <dyncontact/models/mesh_parameters.h>
+#include <dyncontact/models/mesh_section.h>
 #include <dyncontact/postprocess/output_parameters.h>
 #include <dyncontact/simulation/guard_parameters.h>
 #include <dyncontact/solver/newton_parameters.h>
@@ -21,12 +23,16 @@ namespace dyncontact
 /** Which kind of problem a run solves; decides the dimension and the sections that apply. */
 enum class GeometryKind
 {
-  bars,             ///< 1D bars built in code, subsection `Geometry`
-  axisymmetric_mesh ///< bodies of revolution from a gmsh mesh, subsections `Mesh` and `Bodies`
+  bars,              ///< 1D bars built in code, subsection `Geometry`
+  axisymmetric_mesh, ///< bodies of revolution from a gmsh mesh, subsections `Mesh` and `Bodies`
+  plane_strain_mesh  ///< plane-strain bodies from a gmsh mesh, subsections `Mesh` and `Bodies`
 };
 
 /** The names of Problem/geometry. */
 const NameTable<GeometryKind>& geometry_names();
+
+/** The section of a mesh geometry (not bars: Assert). */
+MeshSection mesh_section(GeometryKind geometry);
 
 /** Subsection `Problem`. */
 struct ProblemParameters
@@ -48,6 +54,7 @@ struct RunParameters
   GeometryParameters geometry; ///< bars only
   MeshParameters mesh;         ///< mesh-based problems only
   BodiesParameters bodies;     ///< mesh-based problems only
+  BoundaryParameters boundary; ///< mesh-based problems only
   OutputParameters output;
   /// one line each, for the user: deprecated entries and what replaces them
   std::vector<std::string> warnings;

@@ -4,7 +4,7 @@
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/discretization/elastic_bodies.h>
-#include <dyncontact/discretization/surface_tractions.h>
+#include <dyncontact/discretization/external_loads.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
 #include <dyncontact/time_integration/step_state.h>
@@ -39,7 +39,7 @@ public:
   ImplicitStepper(const GeneralizedAlpha& integrator,
                   const Vector<double>& lumped_mass,
                   const std::vector<bool>& is_fixed_dof,
-                  const SurfaceTractions<dim>& loads,
+                  const ExternalLoads<dim>& loads,
                   ContactConstraints<dim>& contact,
                   const ContactDynamics<dim>& dynamics,
                   ContactNewtonSolver<dim>& solver);
@@ -83,7 +83,7 @@ private:
   const GeneralizedAlpha& integrator;
   const Vector<double>& mass;
   const std::vector<bool>& is_fixed_dof;
-  const SurfaceTractions<dim>& loads;
+  const ExternalLoads<dim>& loads;
   ContactConstraints<dim>& contact;
   const ContactDynamics<dim>& dynamics;
   ContactNewtonSolver<dim>& solver;

@@ -1,4 +1,4 @@
-#include <dyncontact/models/axisymmetric_mesh_model.h>
+#include <dyncontact/models/mesh_model.h>
 #include <dyncontact/reference/impact_measures.h>
 
 #include <deal.II/fe/fe_q.h>
@@ -14,22 +14,25 @@
 
 namespace dyncontact
 {
-AxisymmetricMeshModel::AxisymmetricMeshModel(const MeshParameters& mesh,
-                                             const BodiesParameters& bodies,
-                                             const std::vector<ContactPairParameters>& pairs)
-    : mesh(mesh), bodies(bodies), declared_pairs(pairs), n_cells(0), shortest_edge(0.),
-      largest_coordinate(0.), closest_boundary_vertices(0.)
+MeshModel::MeshModel(const MeshParameters& mesh,
+                     const BodiesParameters& bodies,
+                     const std::vector<ContactPairParameters>& pairs,
+                     const MeshSection section,
+                     const BoundaryParameters& boundary)
+    : mesh(mesh), bodies(bodies), section(section), boundary(boundary), declared_pairs(pairs),
+      n_cells(0), shortest_edge(0.), largest_coordinate(0.), closest_boundary_vertices(0.)
 {
   for (const BodyParameters& body : bodies.bodies)
   {
     initial_velocities.push_back(body.initial_velocity.create<2>(2));
     tractions.push_back(body.surface_traction.create<2>(2));
+    forces.push_back(body.body_force.create<2>(2));
   }
 }
 
-void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation)
+void MeshModel::create_triangulation(Triangulation<2>& triangulation)
 {
-  geometry = read_gmsh_mesh(mesh.file, mesh.geo_parameters, triangulation);
+  geometry = read_gmsh_mesh(mesh.file, mesh.geo_parameters, triangulation, section);
   std::vector<unsigned int> cells_of_body(n_bodies(), 0);
   body_lowest_z.assign(n_bodies(), std::numeric_limits<double>::max());
   body_highest_z.assign(n_bodies(), std::numeric_limits<double>::lowest());
@@ -66,26 +69,33 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
                        std::to_string(body + 1) + " (physical surface " + std::to_string(body + 1) +
                        "), but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
   n_cells = triangulation.n_active_cells();
-  // Volumes of revolution, 2 pi r over each cell in the Q2 mapping of the manifolds.
+  // Volumes (of revolution: 2 pi r) over each cell in the Q2 mapping of the manifolds.
   const MappingQ<2> mapping(2);
   const FE_Q<2> linear(1);
   FEValues<2> cell_values(
       mapping, linear, QGauss<2>(4), update_quadrature_points | update_JxW_values);
+  const std::unique_ptr<Kinematics<2>> kinematics = create_kinematics();
   body_volumes.assign(n_bodies(), 0.);
-  body_centroid_z.assign(n_bodies(), 0.);
+  body_centroids.assign(n_bodies(), Point<2>());
   for (const auto& cell : triangulation.active_cell_iterators())
   {
     cell_values.reinit(cell);
     for (const unsigned int q : cell_values.quadrature_point_indices())
     {
       const Point<2>& point = cell_values.quadrature_point(q);
-      const double volume   = 2. * numbers::PI * point[0] * cell_values.JxW(q);
+      const double volume =
+          kinematics->measure_factor(point, cell->material_id()) * cell_values.JxW(q);
       body_volumes[cell->material_id()] += volume;
-      body_centroid_z[cell->material_id()] += point[1] * volume;
+      body_centroids[cell->material_id()] += volume * point;
     }
   }
   for (unsigned int body = 0; body < n_bodies(); ++body)
-    body_centroid_z[body] /= body_volumes[body];
+  {
+    body_centroids[body] /= body_volumes[body];
+    // A body of revolution has its centroid on the axis.
+    if (section == MeshSection::axisymmetric)
+      body_centroids[body][0] = 0.;
+  }
   closest_boundary_vertices = std::numeric_limits<double>::max();
   if (n_bodies() == 2)
     for (const Point<2>& vertex_0 : boundary_vertices[0])
@@ -94,18 +104,18 @@ void AxisymmetricMeshModel::create_triangulation(Triangulation<2>& triangulation
             std::min(closest_boundary_vertices, vertex_0.distance(vertex_1));
 }
 
-void AxisymmetricMeshModel::attach_manifolds(Triangulation<2>& triangulation) const
+void MeshModel::attach_manifolds(Triangulation<2>& triangulation) const
 {
   dyncontact::attach_manifolds(geometry, triangulation);
 }
 
-double AxisymmetricMeshModel::touching_tolerance() const
+double MeshModel::touching_tolerance() const
 {
   return std::max(1e-9 * shortest_edge,
                   8. * std::numeric_limits<double>::epsilon() * largest_coordinate);
 }
 
-double AxisymmetricMeshModel::dilatational_wave_speed(const unsigned int body) const
+double MeshModel::dilatational_wave_speed(const unsigned int body) const
 {
   const BodyParameters& parameters = bodies.bodies[body];
   const double nu                  = parameters.poissons_ratio;
@@ -114,7 +124,7 @@ double AxisymmetricMeshModel::dilatational_wave_speed(const unsigned int body) c
   return std::sqrt(constrained_modulus / parameters.density);
 }
 
-std::vector<BodyMaterial> AxisymmetricMeshModel::body_materials() const
+std::vector<BodyMaterial> MeshModel::body_materials() const
 {
   std::vector<BodyMaterial> materials;
   for (const auto& body : bodies.bodies)
@@ -123,13 +133,14 @@ std::vector<BodyMaterial> AxisymmetricMeshModel::body_materials() const
   return materials;
 }
 
-std::unique_ptr<Kinematics<2>> AxisymmetricMeshModel::create_kinematics() const
+std::unique_ptr<Kinematics<2>> MeshModel::create_kinematics() const
 {
+  if (section == MeshSection::plane_strain)
+    return std::make_unique<PlaneStrainKinematics>();
   return std::make_unique<AxisymmetricKinematics>();
 }
 
-Tensor<1, 2> AxisymmetricMeshModel::initial_velocity(const types::material_id body,
-                                                     const Point<2>& X) const
+Tensor<1, 2> MeshModel::initial_velocity(const types::material_id body, const Point<2>& X) const
 {
   Tensor<1, 2> velocity;
   for (unsigned int d = 0; d < 2; ++d)
@@ -145,7 +156,7 @@ Tensor<1, 2> AxisymmetricMeshModel::initial_velocity(const types::material_id bo
   return velocity;
 }
 
-ContactDescription<2> AxisymmetricMeshModel::contact_description(const NodeIndex<2>&) const
+ContactDescription<2> MeshModel::contact_description(const NodeIndex<2>&) const
 {
   const std::vector<ContactPairParameters> pairs = effective_pairs();
   if (pairs.empty() && n_bodies() > 2)
@@ -191,7 +202,7 @@ ContactDescription<2> AxisymmetricMeshModel::contact_description(const NodeIndex
   return description;
 }
 
-double AxisymmetricMeshModel::search_radius() const
+double MeshModel::search_radius() const
 {
   // The initial gap between the two spheres plus a quarter of the smaller radius: a head-on
   // impact's contact radius stays far below R / 4 in the small-strain regime (paper spheres:
@@ -203,30 +214,68 @@ double AxisymmetricMeshModel::search_radius() const
   if (!sphere_0 || !sphere_1)
     return closest_boundary_vertices + 0.25 * std::min(body_highest_z[0] - body_lowest_z[0],
                                                        body_highest_z[1] - body_lowest_z[1]);
-  const double distance = std::abs(sphere_1->centre[1] - sphere_0->centre[1]);
+  const double distance = sphere_1->centre.distance(sphere_0->centre);
   const double gap      = std::max(0., distance - sphere_0->radius - sphere_1->radius);
   return gap + 0.25 * std::min(sphere_0->radius, sphere_1->radius);
 }
 
-std::vector<types::global_dof_index>
-AxisymmetricMeshModel::fixed_dofs(const NodeIndex<2>& nodes) const
+std::vector<types::global_dof_index> MeshModel::fixed_dofs(const NodeIndex<2>& nodes) const
 {
   // u_r = 0 on the axis; "on the axis" with a tolerance far below any element size.
   std::vector<types::global_dof_index> dofs;
+  if (section != MeshSection::axisymmetric)
+    return dofs;
   for (const auto& node : nodes.nodes())
     if (std::abs(node.position[0]) <= 1e-9 * shortest_edge)
       dofs.push_back(node.dofs[0]);
   return dofs;
 }
 
-std::vector<Node<2>> AxisymmetricMeshModel::monitor_nodes(const NodeIndex<2>& nodes) const
+std::vector<FixedBoundary> MeshModel::fixed_boundaries() const
+{
+  std::vector<FixedBoundary> fixed;
+  const auto find_curve = [this](const types::boundary_id id, const std::string& section_name)
+  {
+    const BoundaryCurve* curve = geometry.curve(id);
+    if (curve == nullptr)
+      throw InputError(section_name + "/boundary = " + std::to_string(id) + ": Mesh/file = '" +
+                       mesh.file + "' has no boundary curve " + std::to_string(id) + ".");
+    return curve;
+  };
+  for (unsigned int k = 0; k < boundary.symmetry_planes.size(); ++k)
+  {
+    const std::string name      = "Boundary/Symmetry " + std::to_string(k + 1);
+    const types::boundary_id id = boundary.symmetry_planes[k].boundary;
+    const BoundaryCurve* curve  = find_curve(id, name);
+    // The normal of a straight curve as read_gmsh_mesh() fitted it, to round-off of the vertices.
+    std::optional<unsigned int> normal_axis;
+    for (unsigned int d = 0; d < 2; ++d)
+      if (curve->line && std::abs(std::abs(curve->line->second[d]) - 1.) <= 1e-12)
+        normal_axis = d;
+    if (!normal_axis)
+      throw InputError(name + "/boundary = " + std::to_string(id) + " is " +
+                       (curve->line ? "a straight line whose normal is not along x or y"
+                                    : "not a straight line") +
+                       ": a symmetry plane must be a straight boundary with its normal along x (r) "
+                       "or y (z).");
+    fixed.push_back({id, {*normal_axis}});
+  }
+  for (unsigned int k = 0; k < boundary.supports.size(); ++k)
+  {
+    const std::string name = "Boundary/Support " + std::to_string(k + 1);
+    find_curve(boundary.supports[k].boundary, name);
+    fixed.push_back({boundary.supports[k].boundary, boundary.supports[k].components});
+  }
+  return fixed;
+}
+
+std::vector<Node<2>> MeshModel::monitor_nodes(const NodeIndex<2>& nodes) const
 {
   std::vector<Node<2>> monitors;
   for (unsigned int body = 0; body < n_bodies(); ++body)
   {
     const std::vector<double>& given = bodies.bodies[body].monitor_point;
-    const Point<2> point =
-        given.empty() ? Point<2>(0., body_centroid_z[body]) : Point<2>(given[0], given[1]);
+    const Point<2> point = given.empty() ? body_centroids[body] : Point<2>(given[0], given[1]);
     monitors.push_back(nodes.closest_node(body, point));
     if (given.empty())
       continue;
@@ -240,29 +289,40 @@ std::vector<Node<2>> AxisymmetricMeshModel::monitor_nodes(const NodeIndex<2>& no
           "Bodies/Body " + std::to_string(body + 1) + "/monitor point = " + text(point) + " is " +
           format_number(distance) + " from the nearest node of body " + std::to_string(body + 1) +
           " at " + text(node) + ", farther than its largest cell (" +
-          format_number(largest_cell_diameter[body]) +
-          "): give a point in the body (r >= 0, z within " + format_number(body_lowest_z[body]) +
-          ".." + format_number(body_highest_z[body]) + ").");
+          format_number(largest_cell_diameter[body]) + "): give a point in the body (" +
+          (section == MeshSection::axisymmetric ? "r >= 0, z" : "y") + " within " +
+          format_number(body_lowest_z[body]) + ".." + format_number(body_highest_z[body]) + ").");
   }
   return monitors;
 }
 
-std::vector<SurfaceTraction<2>> AxisymmetricMeshModel::surface_tractions() const
+std::vector<SurfaceTraction<2>> MeshModel::surface_tractions() const
 {
   std::vector<SurfaceTraction<2>> surface_loads;
   for (const BoundaryCurve& curve : geometry.curves)
-    surface_loads.push_back({curve.id, tractions[curve.body]});
+    if (!bodies.bodies[curve.body].surface_traction.is_zero())
+      surface_loads.push_back({curve.id, tractions[curve.body]});
   return surface_loads;
 }
 
-Tensor<1, 2> AxisymmetricMeshModel::impact_direction() const
+std::vector<BodyForce<2>> MeshModel::body_forces() const
+{
+  std::vector<BodyForce<2>> loads;
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+    if (!bodies.bodies[body].body_force.is_zero())
+      loads.push_back(
+          {static_cast<types::material_id>(body), forces[body], bodies.bodies[body].density});
+  return loads;
+}
+
+Tensor<1, 2> MeshModel::impact_direction() const
 {
   Tensor<1, 2> axial;
   axial[1] = 1.;
   return axial;
 }
 
-std::vector<ContactPairParameters> AxisymmetricMeshModel::effective_pairs() const
+std::vector<ContactPairParameters> MeshModel::effective_pairs() const
 {
   if (!declared_pairs.empty() || n_bodies() != 2)
     return declared_pairs;
@@ -277,8 +337,7 @@ std::vector<ContactPairParameters> AxisymmetricMeshModel::effective_pairs() cons
                mesh.file + "'"}};
 }
 
-std::optional<AxisymmetricMeshModel::ImpactSide>
-AxisymmetricMeshModel::impact_side(const types::boundary_id id) const
+std::optional<MeshModel::ImpactSide> MeshModel::impact_side(const types::boundary_id id) const
 {
   const BoundaryCurve* curve = geometry.curve(id);
   if (curve == nullptr)
@@ -290,10 +349,10 @@ AxisymmetricMeshModel::impact_side(const types::boundary_id id) const
   return std::nullopt;
 }
 
-std::optional<AxisymmetricMeshModel::HeadOnImpact> AxisymmetricMeshModel::head_on_impact() const
+std::optional<MeshModel::HeadOnImpact> MeshModel::head_on_impact() const
 {
   const std::vector<ContactPairParameters> pairs = effective_pairs();
-  if (pairs.size() != 1)
+  if (section != MeshSection::axisymmetric || pairs.size() != 1)
     return std::nullopt;
   const ContactPairParameters& pair = pairs.front();
   std::optional<ImpactSide> first   = impact_side(pair.slave_boundary), second;
@@ -339,21 +398,20 @@ std::optional<AxisymmetricMeshModel::HeadOnImpact> AxisymmetricMeshModel::head_o
   return HeadOnImpact{*first, *second, approach_speed, gap, direction};
 }
 
-ElasticSphere AxisymmetricMeshModel::elastic_sphere(const unsigned int body,
-                                                    const SphereGeometry& sphere) const
+ElasticSphere MeshModel::elastic_sphere(const unsigned int body, const SphereGeometry& sphere) const
 {
   const BodyParameters& parameters = bodies.bodies[body];
   return {sphere.radius, parameters.youngs_modulus, parameters.poissons_ratio, parameters.density};
 }
 
-double AxisymmetricMeshModel::spherical_side_mass(const ImpactSide& side) const
+double MeshModel::spherical_side_mass(const ImpactSide& side) const
 {
   const BodyParameters& body = bodies.bodies[*side.body];
   return side.whole_sphere ? sphere_mass(elastic_sphere(*side.body, *side.sphere))
                            : body.density * body_volumes[*side.body];
 }
 
-ElasticFlatBody AxisymmetricMeshModel::flat_body(const ImpactSide& side) const
+ElasticFlatBody MeshModel::flat_body(const ImpactSide& side) const
 {
   constexpr double infinity = std::numeric_limits<double>::infinity();
   if (!side.body)
@@ -362,7 +420,7 @@ ElasticFlatBody AxisymmetricMeshModel::flat_body(const ImpactSide& side) const
   return {body.youngs_modulus, body.poissons_ratio, body.density * body_volumes[*side.body]};
 }
 
-std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
+std::optional<HertzImpact> MeshModel::hertz_reference() const
 {
   const std::optional<HeadOnImpact> impact = head_on_impact();
   if (!impact)
@@ -384,7 +442,7 @@ std::optional<HertzImpact> AxisymmetricMeshModel::hertz_reference() const
       touch);
 }
 
-std::optional<FiniteSphereImpact> AxisymmetricMeshModel::finite_sphere_reference() const
+std::optional<FiniteSphereImpact> MeshModel::finite_sphere_reference() const
 {
   const std::optional<HeadOnImpact> impact = head_on_impact();
   if (!impact)
@@ -413,9 +471,9 @@ std::optional<FiniteSphereImpact> AxisymmetricMeshModel::finite_sphere_reference
   }
 }
 
-void AxisymmetricMeshModel::write_reference(const std::string& directory,
-                                            const std::vector<double>& times,
-                                            const std::vector<Node<2>>&) const
+void MeshModel::write_reference(const std::string& directory,
+                                const std::vector<double>& times,
+                                const std::vector<Node<2>>&) const
 {
   const auto hertz = hertz_reference();
   if (!hertz)
@@ -454,11 +512,11 @@ void AxisymmetricMeshModel::write_reference(const std::string& directory,
              << approach_scale * law->approach(time) << "\n";
 }
 
-void AxisymmetricMeshModel::summarize_run(const std::string& directory,
-                                          const History& history,
-                                          const std::vector<double>& contact_impulses,
-                                          const std::string& status,
-                                          std::ostream& log) const
+void MeshModel::summarize_run(const std::string& directory,
+                              const History& history,
+                              const std::vector<double>& contact_impulses,
+                              const std::string& status,
+                              std::ostream& log) const
 {
   const auto hertz = hertz_reference();
   if (!hertz)
@@ -525,10 +583,10 @@ void AxisymmetricMeshModel::summarize_run(const std::string& directory,
   }
 }
 
-void AxisymmetricMeshModel::print_summary(std::ostream& out, const double time_step) const
+void MeshModel::print_summary(std::ostream& out, const double time_step) const
 {
-  out << "  axisymmetric mesh " << mesh.file << ": " << n_cells << " cells (9-node), shortest edge "
-      << shortest_edge << "\n";
+  out << (section == MeshSection::axisymmetric ? "  axisymmetric mesh " : "  plane strain mesh ")
+      << mesh.file << ": " << n_cells << " cells (9-node), shortest edge " << shortest_edge << "\n";
   for (unsigned int body = 0; body < n_bodies(); ++body)
   {
     const BodyParameters& parameters = bodies.bodies[body];
@@ -536,7 +594,13 @@ void AxisymmetricMeshModel::print_summary(std::ostream& out, const double time_s
         << ", E = " << parameters.youngs_modulus << ", nu = " << parameters.poissons_ratio
         << ", rho = " << parameters.density << ", c_p = " << dilatational_wave_speed(body);
     if (const std::optional<SphereGeometry> sphere = geometry.sphere(body))
-      out << ", sphere R = " << sphere->radius << " centred at z = " << sphere->centre[1];
+    {
+      if (section == MeshSection::axisymmetric)
+        out << ", sphere R = " << sphere->radius << " centred at z = " << sphere->centre[1];
+      else
+        out << ", disc R = " << sphere->radius << " centred at (" << sphere->centre[0] << ", "
+            << sphere->centre[1] << ")";
+    }
     out << "\n";
   }
   double speed = 0.;
@@ -550,8 +614,10 @@ void AxisymmetricMeshModel::print_summary(std::ostream& out, const double time_s
         << ", peak force " << hertz->maximum_force() << ", duration " << hertz->contact_duration()
         << (finite_sphere_reference() ? "; and the finite-sphere law (finite_sphere.csv)" : "")
         << "\n";
-  else
+  else if (section == MeshSection::axisymmetric)
     out << "  reference: none (Hertz needs one pair, a sphere or spherical end facing a sphere or "
            "a flat face across the axis, the bodies approaching)\n";
+  else
+    out << "  reference: none (plane strain)\n";
 }
 } // namespace dyncontact

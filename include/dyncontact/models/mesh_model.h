@@ -1,8 +1,10 @@
 #pragma once
 
 #include <dyncontact/contact/contact_parameters.h>
+#include <dyncontact/models/boundary_parameters.h>
 #include <dyncontact/models/gmsh_mesh.h>
 #include <dyncontact/models/mesh_parameters.h>
+#include <dyncontact/models/mesh_section.h>
 #include <dyncontact/models/problem_model.h>
 #include <dyncontact/reference/finite_sphere_impact.h>
 #include <dyncontact/reference/hertz_impact.h>
@@ -12,21 +14,25 @@
 namespace dyncontact
 {
 /**
- * Bodies of revolution in the (r, z) half plane (x = r, y = z) from a gmsh mesh, 9-node
- * quadrilaterals with a quadratic mapping and the mesh's manifolds (spherical on circular boundary
- * curves, see read_gmsh_mesh()): the paper's spheres, a sphere on a block.
- * Each body has its own hyperelastic law, density, initial velocity (a parsed function of r, z) and
- * monitor node; u_r is held at zero on the symmetry axis. Momentum and tip motion are reported
- * along z. Two bodies touch through node-to-node contact of their facing surfaces.
+ * Bodies from a 2D gmsh mesh, 9-node quadrilaterals with a quadratic mapping and the mesh's
+ * manifolds (circular on circular boundary curves, see read_gmsh_mesh()), in one of two sections
+ * (MeshSection): bodies of revolution in the (r, z) half plane (x = r, y = z; the paper's spheres,
+ * a sphere on a block), u_r held at zero on the symmetry axis; or cross-sections of long bodies in
+ * plane strain in the (x, y) plane (a disc, a cylinder on a block), unit thickness.
+ * Each body has its own hyperelastic law, density, initial velocity, surface traction and body
+ * force (parsed functions of x, y, t) and monitor node. Momentum and tip motion are reported along
+ * y (z). Bodies touch through the declared contact pairs.
  */
-class AxisymmetricMeshModel : public ProblemModel<2>
+class MeshModel : public ProblemModel<2>
 {
 public:
   /** `pairs`: the declared contact pairs (Contact/Pair k); empty: the default, see
    * contact_description(). */
-  AxisymmetricMeshModel(const MeshParameters& mesh,
-                        const BodiesParameters& bodies,
-                        const std::vector<ContactPairParameters>& pairs = {});
+  MeshModel(const MeshParameters& mesh,
+            const BodiesParameters& bodies,
+            const std::vector<ContactPairParameters>& pairs = {},
+            MeshSection section                             = MeshSection::axisymmetric,
+            const BoundaryParameters& boundary              = {});
 
   unsigned int element_degree() const override { return 2; }
   unsigned int n_bodies() const override { return bodies.bodies.size(); }
@@ -50,10 +56,18 @@ public:
    * mesh does not have throw InputError when the contact is built (create_contact()).
    */
   ContactDescription<2> contact_description(const NodeIndex<2>& nodes) const override;
+  /** u_r on the axis r = 0 in axisymmetry; none in plane strain. */
   std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<2>& nodes) const override;
   /**
-   * The node of each body nearest to its `monitor point` (by default its centroid on the axis,
-   * (0, z_c)). Throws InputError for a given point farther
+   * The Boundary section's symmetry planes (the normal component on a straight boundary curve
+   * whose normal lies along x or y) and supports. Throws InputError naming the subsection for a
+   * boundary id the mesh does not have, and for a symmetry boundary that is not such a line (a
+   * circle, an oblique line).
+   */
+  std::vector<FixedBoundary> fixed_boundaries() const override;
+  /**
+   * The node of each body nearest to its `monitor point` (by default its centroid: on the axis,
+   * (0, z_c), in axisymmetry). Throws InputError for a given point farther
    * from that node than the body's largest cell diameter (a point outside the body by more than a
    * cell, which would silently report some surface node).
    */
@@ -64,6 +78,8 @@ public:
    * create_triangulation().
    */
   std::vector<SurfaceTraction<2>> surface_tractions() const override;
+  /** Body b's `Body force` on its cells, for every body whose force is not zero. */
+  std::vector<BodyForce<2>> body_forces() const override;
   Tensor<1, 2> impact_direction() const override;
   /**
    * Writes hertz.csv (time, contact_force, approach of Hertz's theory at `times`) if the problem
@@ -88,15 +104,15 @@ public:
                      const std::string& status,
                      std::ostream& log) const override;
   /**
-   * Hertz's theory of this impact if it applies: one contact pair (declared, or the default of
-   * two bodies) between a full sphere (MeshGeometry::sphere()) and another full sphere
-   * (HertzImpact::two_spheres, any radii and material constants), or a flat boundary
-   * perpendicular to the axis of an elastic body (HertzImpact::sphere_on_flat with that body's E,
-   * nu and mass rho V, V its meshed volume of revolution), or a rigid plane perpendicular to the
-   * axis (E and mass infinite); the bodies approach along the axis with the initial velocities
-   * given (evaluated at the sphere's centre, at the flat surface's point on the axis); first touch
-   * at gap / approach speed, at t = 0 if they touch to touching_tolerance(). Empty otherwise
-   * (several pairs, other shapes, overlapping or separating bodies). Valid after
+   * Hertz's theory of this impact if it applies (axisymmetric meshes only): one contact pair
+   * (declared, or the default of two bodies) between a full sphere (MeshGeometry::sphere()) and
+   * another full sphere (HertzImpact::two_spheres, any radii and material constants), or a flat
+   * boundary perpendicular to the axis of an elastic body (HertzImpact::sphere_on_flat with that
+   * body's E, nu and mass rho V, V its meshed volume of revolution), or a rigid plane perpendicular
+   * to the axis (E and mass infinite); the bodies approach along the axis with the initial
+   * velocities given (evaluated at the sphere's centre, at the flat surface's point on the axis);
+   * first touch at gap / approach speed, at t = 0 if they touch to touching_tolerance(). Empty
+   * otherwise (several pairs, other shapes, overlapping or separating bodies). Valid after
    * create_triangulation(). A body of another shape whose contact boundary is a spherical end
    * (an arc of a circle centred on the axis whose pole is the body's extreme point toward the
    * other side, e.g. a cylinder with a hemispherical end) counts as a sphere with the arc's radius
@@ -178,8 +194,11 @@ private:
 
   MeshParameters mesh;
   BodiesParameters bodies;
-  /// per body: its initial velocity and surface traction, built from the parameters' expressions
-  std::vector<std::shared_ptr<Functions::ParsedFunction<2>>> initial_velocities, tractions;
+  MeshSection section;
+  BoundaryParameters boundary;
+  /// per body: its initial velocity, surface traction and body force, built from the parameters'
+  /// expressions
+  std::vector<std::shared_ptr<Functions::ParsedFunction<2>>> initial_velocities, tractions, forces;
   std::vector<ContactPairParameters> declared_pairs;
   MeshGeometry geometry;
   unsigned int n_cells;
@@ -192,9 +211,12 @@ private:
   std::vector<double> largest_cell_diameter;
   /** Lowest and highest z of each body's vertices [length]. */
   std::vector<double> body_lowest_z, body_highest_z;
-  /** Volume of revolution of each body's mesh (Q2 mapping) [length^3]. */
+  /**
+   * Volume of each body's mesh (Q2 mapping) [length^3]: of revolution, or per unit thickness in
+   * plane strain.
+   */
   std::vector<double> body_volumes;
-  /** The z of each body's centroid (its volume's, on the axis) [length]. */
-  std::vector<double> body_centroid_z;
+  /** Each body's centroid (its volume's; on the axis in axisymmetry) [length]. */
+  std::vector<Point<2>> body_centroids;
 };
 } // namespace dyncontact

@@ -1,0 +1,104 @@
+#include <dyncontact/base/parameter_entries.h>
+#include <dyncontact/models/boundary_parameters.h>
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+
+namespace dyncontact
+{
+namespace
+{
+/** The boundary id of entry `boundary` of `section`, >= 1 (0 is no physical curve). */
+types::boundary_id get_boundary(ParameterHandler& prm, const std::string& section)
+{
+  const long id = prm.get_integer("boundary");
+  if (id < 1)
+    throw InputError(section + "/boundary = " + prm.get("boundary") +
+                     " is not set: give the gmsh physical curve tag (>= 1) of the boundary.");
+  return static_cast<types::boundary_id>(id);
+}
+} // namespace
+
+void SymmetryParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("boundary",
+                    "0",
+                    Patterns::Integer(0, 1000),
+                    "Boundary id (gmsh physical curve tag, >= 1) of a straight boundary whose "
+                    "normal, along x (r) or y (z), is a symmetry plane: its normal displacement "
+                    "is held at zero.");
+}
+
+void SymmetryParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+{
+  boundary = get_boundary(prm, section);
+}
+
+void SupportParameters::declare_parameters(ParameterHandler& prm)
+{
+  prm.declare_entry("boundary",
+                    "0",
+                    Patterns::Integer(0, 1000),
+                    "Boundary id (gmsh physical curve tag, >= 1) of the supported boundary.");
+  prm.declare_entry("components",
+                    "x, y",
+                    Patterns::List(Patterns::Selection("x|y"), 1, 2),
+                    "The displacement components held at zero on it: x (r), y (z), or both "
+                    "(a clamp).");
+}
+
+void SupportParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+{
+  boundary = get_boundary(prm, section);
+  components.clear();
+  for (const std::string& name : Utilities::split_string_list(prm.get("components")))
+    components.push_back(name == "x" ? 0 : 1);
+  std::sort(components.begin(), components.end());
+  components.erase(std::unique(components.begin(), components.end()), components.end());
+}
+
+void BoundaryParameters::declare_parameters(ParameterHandler& prm,
+                                            const unsigned int n_symmetry_planes,
+                                            const unsigned int n_supports)
+{
+  prm.enter_subsection("Boundary");
+  prm.declare_entry("number of symmetry planes",
+                    "0",
+                    Patterns::Integer(0, 10),
+                    "How many `Symmetry k` subsections follow, 0..10.");
+  prm.declare_entry("number of supports",
+                    "0",
+                    Patterns::Integer(0, 100),
+                    "How many `Support k` subsections follow, 0..100.");
+  for_each_numbered_subsection(prm,
+                               "Symmetry",
+                               n_symmetry_planes,
+                               [&prm](unsigned int, const std::string&)
+                               { SymmetryParameters::declare_parameters(prm); });
+  for_each_numbered_subsection(prm,
+                               "Support",
+                               n_supports,
+                               [&prm](unsigned int, const std::string&)
+                               { SupportParameters::declare_parameters(prm); });
+  prm.leave_subsection();
+}
+
+void BoundaryParameters::parse_parameters(ParameterHandler& prm)
+{
+  prm.enter_subsection("Boundary");
+  symmetry_planes.resize(prm.get_integer("number of symmetry planes"));
+  supports.resize(prm.get_integer("number of supports"));
+  for_each_numbered_subsection(prm,
+                               "Symmetry",
+                               symmetry_planes.size(),
+                               [&](const unsigned int k, const std::string& name)
+                               { symmetry_planes[k].parse_parameters(prm, "Boundary/" + name); });
+  for_each_numbered_subsection(prm,
+                               "Support",
+                               supports.size(),
+                               [&](const unsigned int k, const std::string& name)
+                               { supports[k].parse_parameters(prm, "Boundary/" + name); });
+  prm.leave_subsection();
+}
+} // namespace dyncontact
