@@ -263,7 +263,8 @@ def case_description(run_dirs):
             name = ('sphere impact' if os.path.isfile(os.path.join(run_dir, 'finite_sphere.csv'))
                     else 'head-on impact') + (f', {mesh_file}' if mesh_file else '')
         elif mesh:
-            name = 'axisymmetric bodies' + (f', {mesh_file}' if mesh_file else '')
+            name = ('plane strain bodies' if prm.get('problem/geometry') == 'plane strain mesh'
+                    else 'axisymmetric bodies') + (f', {mesh_file}' if mesh_file else '')
         elif prm.get('problem/geometry') == 'bars' or 'geometry/number of bars' in prm:
             name = 'bars' + (' on a rigid wall' if prm.get('geometry/rigid wall/enabled') == 'true'
                              else '')
@@ -468,10 +469,19 @@ def energy_unit(largest):
     return ENERGY_UNITS[-1][1:]
 
 
+def does_external_work(history):
+    """Whether loads (tractions, body forces) did work in the run: its external_work column."""
+    return 'external_work' in history and np.nanmax(np.abs(history['external_work']),
+                                                     initial=0) > 0
+
+
 def energy_error_curves(full_history, history):
-    """(E - E0)/E0 of the physical and algorithmic energy, E0 the first row of the whole run;
-    returns (curves in relative units, label suffixes)."""
+    """(E - E0)/E0 of the physical and algorithmic energy, E0 the first row of the whole run; with
+    external work W (does_external_work()) the energy guard's balance (E - E0 - W)/E_ref instead,
+    E_ref the largest of |E0| and |W| over the run (E0 is zero for a body at rest under gravity).
+    Returns the curves in relative units."""
     curves = []
+    work = full_history['external_work'] if does_external_work(full_history) else None
     same = ('algorithmic_energy' in history and 'total_energy' in history and
             np.allclose(history['algorithmic_energy'], history['total_energy'],
                         rtol=1e-12, atol=0, equal_nan=True))
@@ -481,7 +491,12 @@ def energy_error_curves(full_history, history):
              FE_COLOURS[3], dict(lw=1.2, ls='--'))):
         if column in history:
             e0 = full_history[column][0]
-            relative = (history[column] - e0) / abs(e0) if e0 else np.full_like(history[column], np.nan)
+            if work is not None:
+                scale = max(abs(e0), np.nanmax(np.abs(work)))
+                relative = (history[column] - e0 - history['external_work']) / scale
+            else:
+                relative = ((history[column] - e0) / abs(e0) if e0
+                            else np.full_like(history[column], np.nan))
             curves.append((history['time'], relative,
                            dict(label=name, color=colour, zorder=3, **style)))
     return curves
@@ -1564,6 +1579,8 @@ def energy_rows(runs, zoomed):
             panel.append((np.array([np.nan]), np.array([factor]),
                           dict(label='_unit factor', color='none')))
         scaled.append(panel)
+        if does_external_work(runs[len(ylabels)]['history']):
+            ylabel = ylabel.replace('(E − E0)/E0', '(E − E0 − W)/E_ref')
         ylabels.append(ylabel)
     return [('energy', 'energy', [energy_curves(z) for z in zoomed]),
             ('relative energy change', ylabels, scaled, independent)]

@@ -205,11 +205,14 @@ def force(directory):
 
 def energy(directory):
     """The energy panel: the second row is (E - E0)/E0 of the physical (kinetic + strain) and
-    algorithmic energy of history.csv, E0 its first row, times the unit factor of the axis."""
+    algorithmic energy of history.csv, E0 its first row, times the unit factor of the axis; with
+    external work W (history.csv's external_work not all zero) the energy guard's balance
+    (E - E0 - W)/E_ref, E_ref = max(|E0|, max |W|), so a body starting at rest under gravity
+    (E0 = 0) has a finite panel."""
     rows = read_data(os.path.join(plots(directory), 'energy.csv'))
     history = read_table(os.path.join(directory, 'history.csv'))
     check(np.max(np.abs(history['total_energy'] - history['kinetic_energy'] -
-                        history['strain_energy'])) <= 1e-12 * history['total_energy'][0],
+                        history['strain_energy'])) <= 1e-12 * np.max(history['total_energy']),
           'history.csv: total_energy is not kinetic + strain')
     _, factor = series(rows, 'relative energy change', 'unit factor')
     factor = factor[0]
@@ -217,13 +220,16 @@ def energy(directory):
     for prefix, column in (('physical', 'total_energy'), ('algorithmic', 'algorithmic_energy')):
         t, y = series(rows, 'relative energy change', prefix)
         e = history[column]
-        expected = (np.interp(t, history['time'], e) - e[0]) / abs(e[0])
+        work = history.get('external_work', np.zeros_like(e))
+        scale = max(abs(e[0]), np.max(np.abs(work)))
+        expected = (np.interp(t, history['time'], e) - e[0] -
+                    np.interp(t, history['time'], work)) / scale
         check(np.all(np.isin(t, history['time'])), f'{prefix}: times that are not rows of history.csv')
         # Both are computed from the same doubles: round-off of one subtraction and division.
         check(np.max(np.abs(y / factor - expected)) <= 1e-13,
-              f'{prefix}: the plotted values are not (E - E0)/E0 times {factor:g}')
+              f'{prefix}: the plotted values are not (E - E0 - W)/E_ref times {factor:g}')
         largest = max(largest, np.max(np.abs(expected)))
-        print(f'{prefix}: (E - E0)/E0 from {np.min(expected):.3e} to {np.max(expected):.3e}, '
+        print(f'{prefix}: (E - E0 - W)/E_ref from {np.min(expected):.3e} to {np.max(expected):.3e}, '
               f'drawn times {factor:g}')
     # The unit makes the error readable: per cent from 1e-3 to 10, ppm below, a plain ratio above.
     wanted = 1.0 if largest >= 10 else 100.0 if largest >= 1e-3 else 1e6
