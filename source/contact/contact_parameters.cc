@@ -39,12 +39,12 @@ void ContactPairParameters::declare_parameters(ParameterHandler& prm)
                     "0",
                     Patterns::Integer(0),
                     "The slave surface of this pair: a boundary id, i.e. the tag of a gmsh "
-                    "physical curve of the mesh (>= 2; 1 is the symmetry axis). Its nodes carry "
-                    "the pair's multipliers.");
+                    "physical curve of the mesh (>= 1; not the symmetry axis 1 of an "
+                    "axisymmetric mesh). Its nodes carry the pair's multipliers.");
   prm.declare_entry("master boundary",
                     "0",
                     Patterns::Integer(0),
-                    "The master surface: a boundary id (>= 2) of another body, or 0 for the rigid "
+                    "The master surface: a boundary id (>= 1) of another body, or 0 for the rigid "
                     "plane below. The slave nodes are projected onto it (node-to-segment) or "
                     "paired with its facing nodes (node-to-node).");
   prm.declare_entry("rigid plane",
@@ -63,17 +63,17 @@ void ContactPairParameters::parse_parameters(ParameterHandler& prm, const std::s
   const auto master      = prm.get_integer("master boundary");
   const std::string text = prm.get("rigid plane");
   const bool has_plane   = text.find_first_not_of(" \t") != std::string::npos;
-  if (slave < 2)
+  if (slave < 1)
     throw InputError(source + "/slave boundary = " + std::to_string(slave) +
-                     " is not allowed: it must be a boundary id >= 2 (a gmsh physical curve "
-                     "tag; 1 is the symmetry axis).");
-  if (master == 1 || master == slave)
+                     " is not allowed: it must be a boundary id >= 1 (a gmsh physical curve "
+                     "tag).");
+  if (master < 0 || master == slave)
     throw InputError(source + "/master boundary = " + std::to_string(master) +
-                     " is not allowed: it must be a boundary id >= 2 other than the slave "
+                     " is not allowed: it must be a boundary id >= 1 other than the slave "
                      "boundary, or 0 for a rigid plane.");
   if ((master != 0) == has_plane)
     throw InputError(source +
-                     ": give either master boundary (>= 2) or rigid plane ('r, z; "
+                     ": give either master boundary (>= 1) or rigid plane ('r, z; "
                      "n_r, n_z' with master boundary = 0), not " +
                      std::string(has_plane ? "both." : "neither."));
   slave_boundary = slave;

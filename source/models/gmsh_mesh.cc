@@ -1,6 +1,7 @@
 #include <dyncontact/models/gmsh_mesh.h>
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
@@ -42,6 +43,19 @@ std::string listed(const std::set<unsigned int>& numbers)
 
 /** The ONELAB folder of the parameters of a .geo file (DefineConstant ... Name "Parameters/x"). */
 const std::string parameter_folder = "Parameters/";
+
+/** The cells dyncontact takes in `dim` dimensions: "quadrilaterals" or "hexahedra". */
+std::string cell_kind(const int dim)
+{
+  return dim == 2 ? "quadrilaterals" : "hexahedra";
+}
+
+/** The gmsh physical group of a body in `dim` dimensions: "physical surface" or "physical volume".
+ */
+std::string body_group(const int dim)
+{
+  return dim == 2 ? "physical surface" : "physical volume";
+}
 
 /** The start of every message about `filename`. */
 std::string about(const std::string& filename)
@@ -163,12 +177,14 @@ std::vector<std::string> declared_parameters()
 }
 
 /**
- * Checks the element types of the mesh in the session: quadrilaterals (of any order) as cells,
- * lines and points on the boundary, nothing else; throws InputError naming `filename` and the
- * types found otherwise. Returns whether some elements are of higher order than 1.
+ * Checks the element types of the mesh in the session: `dim`-dimensional cells quadrilaterals
+ * (dim 2) or hexahedra (dim 3) of any order, lower-dimensional elements on the boundary, nothing
+ * else; throws InputError naming `filename` and the types found otherwise. Returns whether some
+ * elements are of higher order than 1.
  */
-bool check_element_types(const std::string& filename)
+bool check_element_types(const std::string& filename, const int cell_dim)
 {
+  const std::string allowed = cell_dim == 2 ? "Quadrilateral" : "Hexahedron";
   std::vector<int> types;
   gmsh::model::mesh::getElementTypes(types);
   std::size_t n_cells = 0, n_other_cells = 0;
@@ -184,10 +200,10 @@ bool check_element_types(const std::string& filename)
     std::vector<std::size_t> elements, nodes;
     gmsh::model::mesh::getElementsByType(type, elements, nodes);
     higher_order = higher_order || order > 1;
-    if (dim < 2)
+    if (dim < cell_dim)
       continue;
     n_cells += elements.size();
-    if (dim > 2 || name.compare(0, 13, "Quadrilateral") != 0)
+    if (dim > cell_dim || name.compare(0, allowed.size(), allowed) != 0)
     {
       n_other_cells += elements.size();
       other_types +=
@@ -195,10 +211,14 @@ bool check_element_types(const std::string& filename)
     }
   }
   if (n_other_cells > 0)
-    throw InputError(about(filename) + std::to_string(n_other_cells) + " of its " +
-                     std::to_string(n_cells) + " cells are not quadrilaterals (" + other_types +
-                     "); only quadrilaterals (4-, 8- or 9-node) are allowed (in a .geo file: "
-                     "Transfinite and Recombine Surface).");
+    throw InputError(
+        about(filename) + std::to_string(n_other_cells) + " of its " + std::to_string(n_cells) +
+        " cells are not " + cell_kind(cell_dim) + " (" + other_types + "); only " +
+        (cell_dim == 2 ? "quadrilaterals (4-, 8- or 9-node) are allowed (in a .geo file: "
+                         "Transfinite and Recombine Surface)."
+                       : "hexahedra (8-, 20- or 27-node) are allowed (in a .geo file: "
+                         "Transfinite Volume and Recombine, or an Extrude with Layers and "
+                         "Recombine)."));
   return higher_order;
 }
 
@@ -215,7 +235,8 @@ bool check_element_types(const std::string& filename)
  */
 std::string first_order_mesh(const std::string& mesh_file,
                              const std::map<std::string, double>& geo_parameters,
-                             const std::string& msh_file)
+                             const std::string& msh_file,
+                             const int dim)
 {
   GmshSession session;
   const bool is_geo = std::filesystem::path(mesh_file).extension() == ".geo";
@@ -247,9 +268,9 @@ std::string first_order_mesh(const std::string& mesh_file,
     {
       gmsh::option::setNumber("Mesh.ElementOrder", 1);
       gmsh::option::setNumber("Mesh.RecombineAll", 1);
-      gmsh::model::mesh::generate(2);
+      gmsh::model::mesh::generate(dim);
     }
-    const bool higher_order = check_element_types(mesh_file);
+    const bool higher_order = check_element_types(mesh_file, dim);
     if (!is_geo && !higher_order)
       return mesh_file;
     if (higher_order)
@@ -278,12 +299,13 @@ std::string first_order_mesh(const std::string& mesh_file,
  * name `reported_file` (the file the user gave). Material and boundary ids are gmsh's physical
  * tags; untagged boundary faces get boundary id 0.
  */
+template <int dim>
 void read_msh_file(const std::string& msh_file,
                    const std::string& reported_file,
-                   Triangulation<2>& triangulation)
+                   Triangulation<dim>& triangulation)
 {
   std::ifstream input(msh_file);
-  GridIn<2> grid_in;
+  GridIn<dim> grid_in;
   grid_in.attach_triangulation(triangulation);
   try
   {
@@ -298,32 +320,33 @@ void read_msh_file(const std::string& msh_file,
 }
 
 /**
- * Checks that the cells are all quadrilaterals, each in a physical surface, and that the
- * surfaces are numbered 1, ..., n; turns physical surface b + 1 into material id b. Returns n.
+ * Checks that the cells are all quadrilaterals (hexahedra in 3D), each in a physical surface
+ * (volume), and that these are numbered 1, ..., n; turns physical group b + 1 into material id b.
+ * Returns n.
  */
-unsigned int assign_bodies(const std::string& filename, Triangulation<2>& triangulation)
+template <int dim>
+unsigned int assign_bodies(const std::string& filename, Triangulation<dim>& triangulation)
 {
-  unsigned int n_not_quadrilateral = 0;
-  std::set<unsigned int> surface_tags;
+  unsigned int n_other_cells = 0;
+  std::set<unsigned int> body_tags;
   for (const auto& cell : triangulation.active_cell_iterators())
   {
-    if (cell->reference_cell() != ReferenceCells::Quadrilateral)
-      ++n_not_quadrilateral;
-    surface_tags.insert(cell->material_id());
+    if (cell->reference_cell() != ReferenceCells::get_hypercube<dim>())
+      ++n_other_cells;
+    body_tags.insert(cell->material_id());
   }
-  if (n_not_quadrilateral > 0)
-    throw InputError(about(filename) + std::to_string(n_not_quadrilateral) + " of its " +
-                     std::to_string(triangulation.n_active_cells()) +
-                     " cells are not quadrilaterals; only quadrilaterals are allowed (in a .geo "
-                     "file: Transfinite and Recombine Surface).");
-  if (surface_tags.count(0) > 0)
-    throw InputError(about(filename) +
-                     "some cells belong to no physical surface; every cell must be in physical "
-                     "surface b for its body b = 1, 2, ...");
+  if (n_other_cells > 0)
+    throw InputError(about(filename) + std::to_string(n_other_cells) + " of its " +
+                     std::to_string(triangulation.n_active_cells()) + " cells are not " +
+                     cell_kind(dim) + "; only " + cell_kind(dim) + " are allowed.");
+  if (body_tags.count(0) > 0)
+    throw InputError(about(filename) + "some cells belong to no " + body_group(dim) +
+                     "; every cell must be in " + body_group(dim) +
+                     " b for its body b = 1, 2, ...");
 
-  const unsigned int n_bodies = *surface_tags.rbegin();
-  if (surface_tags.size() != n_bodies)
-    throw InputError(about(filename) + "its physical surfaces are " + listed(surface_tags) +
+  const unsigned int n_bodies = *body_tags.rbegin();
+  if (body_tags.size() != n_bodies)
+    throw InputError(about(filename) + "its " + body_group(dim) + "s are " + listed(body_tags) +
                      ", but they must be numbered 1, 2, ..., one per body, without gaps.");
 
   for (const auto& cell : triangulation.active_cell_iterators())
@@ -593,7 +616,131 @@ void set_manifold_ids(const MeshGeometry& geometry, Triangulation<2>& triangulat
         }
       }
 }
+/**
+ * Reads `filename` (.geo meshed in `dim` dimensions, or .msh) in first order into the empty
+ * `triangulation` (see read_gmsh_mesh()); the file's existence and extension are checked first.
+ * Throws InputError naming the file, the triangulation left empty.
+ */
+template <int dim>
+void read_first_order_mesh(const std::string& filename,
+                           const std::map<std::string, double>& geo_parameters,
+                           Triangulation<dim>& triangulation)
+{
+  Assert(triangulation.n_cells() == 0, ExcMessage("The triangulation must be empty."));
+  std::error_code file_status_error;
+  if (!std::filesystem::is_regular_file(filename, file_status_error) || !std::ifstream(filename))
+    throw InputError(about(filename) + "it does not exist or cannot be read.");
+  const std::string extension = std::filesystem::path(filename).extension().string();
+  if (extension != ".geo" && extension != ".msh")
+    throw InputError(about(filename) + "unknown extension '" + extension +
+                     "'; allowed are .geo (meshed by gmsh) and .msh (a gmsh mesh).");
+  if (extension == ".msh" && !geo_parameters.empty())
+    throw InputError(about(filename) + "a .msh file is a finished mesh and takes no parameters (" +
+                     geo_parameters.begin()->first +
+                     " was given); parameters apply to .geo files.");
+  try
+  {
+    const TemporaryFile msh_file(".msh");
+    read_msh_file(
+        first_order_mesh(filename, geo_parameters, msh_file.name(), dim), filename, triangulation);
+  }
+  catch (const InputError&)
+  {
+    triangulation.clear();
+    throw;
+  }
+}
+
+/**
+ * The plane that fits `points` best (through their mean, normal along the direction of least
+ * scatter) and the largest distance of a point from it.
+ */
+std::tuple<Point<3>, Tensor<1, 3>, double> fit_plane(const std::vector<Point<3>>& points)
+{
+  Point<3> mean;
+  for (const Point<3>& point : points)
+    mean += point / static_cast<double>(points.size());
+  SymmetricTensor<2, 3> scatter;
+  for (const Point<3>& point : points)
+    scatter += symmetrize(outer_product(point - mean, point - mean));
+  // eigenvectors() sorts by descending eigenvalue: the last is the normal.
+  const Tensor<1, 3> normal = eigenvectors(scatter)[2].second;
+  double deviation          = 0.;
+  for (const Point<3>& point : points)
+    deviation = std::max(deviation, std::abs((point - mean) * normal));
+  return {mean, normal, deviation};
+}
 } // namespace
+
+SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
+                                       const std::map<std::string, double>& geo_parameters,
+                                       Triangulation<3>& triangulation)
+{
+  read_first_order_mesh(filename, geo_parameters, triangulation);
+  try
+  {
+    SolidMeshGeometry geometry;
+    geometry.n_bodies = assign_bodies(filename, triangulation);
+    // The faces of each physical surface: their bodies, vertices and outward direction.
+    struct SurfaceFaces
+    {
+      std::set<unsigned int> bodies;
+      std::vector<Point<3>> vertices;
+      Tensor<1, 3> outward;
+    };
+    std::map<types::boundary_id, SurfaceFaces> surfaces;
+    for (const auto& cell : triangulation.active_cell_iterators())
+      for (const auto& face : cell->face_iterators())
+        if (face->at_boundary())
+        {
+          if (face->boundary_id() == 0)
+            throw InputError(about(filename) + "a boundary face of body " +
+                             std::to_string(cell->material_id() + 1) + " at (" +
+                             format_number(face->center()[0]) + ", " +
+                             format_number(face->center()[1]) + ", " +
+                             format_number(face->center()[2]) +
+                             ") belongs to no physical surface; each boundary face must be in a "
+                             "physical surface t >= 1 of one body.");
+          SurfaceFaces& faces = surfaces[face->boundary_id()];
+          faces.bodies.insert(cell->material_id());
+          for (const unsigned int v : face->vertex_indices())
+            faces.vertices.push_back(face->vertex(v));
+          faces.outward += face->center() - cell->center();
+        }
+    const double size = GridTools::diameter(triangulation);
+    for (const auto& [id, faces] : surfaces)
+    {
+      const std::string surface = "physical surface " + std::to_string(id);
+      if (faces.bodies.size() > 1)
+        throw InputError(about(filename) + surface +
+                         " bounds cells of more than one body; each "
+                         "physical surface must bound one body only.");
+      const auto [point, normal, deviation] = fit_plane(faces.vertices);
+      if (deviation > 1e-6 * size)
+        throw InputError(about(filename) + surface + " (of body " +
+                         std::to_string(*faces.bodies.begin() + 1) +
+                         ") is not planar (a vertex lies " + format_number(deviation) +
+                         " from its best-fit plane); curved surfaces in 3D meshes are not "
+                         "implemented yet: split it into planar physical surfaces.");
+      geometry.surfaces.push_back(
+          {id, *faces.bodies.begin(), point, normal * faces.outward > 0 ? normal : -normal});
+    }
+    return geometry;
+  }
+  catch (const InputError&)
+  {
+    triangulation.clear();
+    throw;
+  }
+}
+
+const BoundarySurface* SolidMeshGeometry::surface(const types::boundary_id id) const
+{
+  for (const BoundarySurface& candidate : surfaces)
+    if (candidate.id == id)
+      return &candidate;
+  return nullptr;
+}
 
 const BoundaryCurve* MeshGeometry::curve(const types::boundary_id id) const
 {
@@ -634,28 +781,9 @@ MeshGeometry read_gmsh_mesh(const std::string& filename,
                             Triangulation<2>& triangulation,
                             const MeshSection section)
 {
-  Assert(triangulation.n_cells() == 0, ExcMessage("The triangulation must be empty."));
-
-  std::error_code file_status_error;
-  if (!std::filesystem::is_regular_file(filename, file_status_error) || !std::ifstream(filename))
-    throw InputError(about(filename) + "it does not exist or cannot be read.");
-  const std::string extension = std::filesystem::path(filename).extension().string();
-  if (extension != ".geo" && extension != ".msh")
-    throw InputError(about(filename) + "unknown extension '" + extension +
-                     "'; allowed are .geo (meshed by gmsh) and .msh (a gmsh mesh).");
-  if (extension == ".msh" && !geo_parameters.empty())
-    throw InputError(about(filename) + "a .msh file is a finished mesh and takes no parameters (" +
-                     geo_parameters.begin()->first +
-                     " was given); parameters apply to .geo files.");
-
+  read_first_order_mesh(filename, geo_parameters, triangulation);
   try
   {
-    {
-      const TemporaryFile msh_file(".msh");
-      read_msh_file(
-          first_order_mesh(filename, geo_parameters, msh_file.name()), filename, triangulation);
-    }
-
     MeshGeometry geometry;
     geometry.n_bodies = assign_bodies(filename, triangulation);
     for (const auto& [id, faces] : collect_curves(filename, triangulation, section))

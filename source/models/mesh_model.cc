@@ -171,6 +171,14 @@ ContactDescription<2> MeshModel::contact_description(const NodeIndex<2>&) const
   {
     const std::string source =
         declared_pairs.empty() ? pair.source : pair.source + " (Mesh/file = '" + mesh.file + "')";
+    if (section == MeshSection::axisymmetric)
+      for (const auto& [role, id] :
+           {std::pair<std::string, types::boundary_id>{"slave", pair.slave_boundary},
+            {"master", pair.master_boundary.value_or(0)}})
+        if (id == SphereMeshIds::axis)
+          throw InputError(source + ": " + role +
+                           " boundary = 1 is the symmetry axis of an axisymmetric mesh (physical "
+                           "curve 1), not a contact surface.");
     const BoundaryCurve* slave = geometry.curve(pair.slave_boundary);
     const BoundaryCurve* master =
         pair.master_boundary ? geometry.curve(*pair.master_boundary) : nullptr;

@@ -198,6 +198,20 @@ TEST(PlaneStrain, HalfBlockOnItsSymmetryPlaneEqualsTheWholeBlock)
   EXPECT_GT(free_differs, 1e-3);
 }
 
+TEST(PlaneStrain, CurveOneIsAContactSurfaceLikeAnyOther)
+{
+  // In plane strain there is no axis: the block's left side (curve 1, x = 0.5) strikes the plane
+  // x = 0 at speed 1 (touch at t = 0.5), as its bottom strikes y = 0 in the test above.
+  const MeshRun run = run_mesh_case(
+      disc_case,
+      block_case("X0: 0.5, Width: 2, NX: 8",
+                 "-1; 0",
+                 "1.5, 1",
+                 {"Contact/Pair 1/slave boundary=1", "Contact/Pair 1/rigid plane=0, 0; 1, 0"}));
+  EXPECT_GT(max_force_deviation(run.history(), 0., 0.5, 1.), 1.) << "the block never struck";
+  EXPECT_EQ(max_force_deviation(run.history(), 0., 0., 0.5 - 1e-9), 0.) << "a force before 0.5";
+}
+
 TEST(PlaneStrain, RollerSupportLetsTheBlockSlideAndAClampHoldsIt)
 {
   // No contact: the block 2 x 1 far above the plane, at speed 1 along x.

@@ -147,6 +147,42 @@ MeshGeometry read_gmsh_mesh(const std::string& filename,
  */
 void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulation);
 
+/** A physical surface of a 3D mesh, as read_gmsh_solid_mesh() found it: a plane. */
+struct BoundarySurface
+{
+  types::boundary_id id; ///< the gmsh physical surface tag (>= 1), also its boundary id
+  unsigned int body;     ///< 0-based body whose cells it bounds
+  Point<3> point;        ///< a point of the plane (its vertices' mean) [length]
+  Tensor<1, 3> normal;   ///< the unit normal, pointing out of the body
+};
+
+/** What read_gmsh_solid_mesh() found: the bodies and their boundary surfaces. */
+struct SolidMeshGeometry
+{
+  unsigned int n_bodies = 0;             ///< number of bodies (physical volumes)
+  std::vector<BoundarySurface> surfaces; ///< sorted by id
+
+  /** The surface with boundary id `id`, or nullptr. */
+  const BoundarySurface* surface(types::boundary_id id) const;
+};
+
+/**
+ * Reads a 3D mesh of one or more bodies, all hexahedra, into `triangulation` (which must be
+ * empty), as read_gmsh_mesh() reads a 2D one: a `.geo` file meshed in 3D by the gmsh library in
+ * first order (its parameters set first), or a `.msh` of any order reduced to first order on its
+ * vertices. Physical volume b + 1 holds the cells of body b (material id b, numbered without
+ * gaps); every boundary face lies in a physical surface t >= 1 of one body (boundary id t).
+ * Each surface must be planar (every vertex within 1e-6 of the mesh's diameter from its best-fit
+ * plane): curved surfaces, and manifolds for them, are not implemented yet. Throws InputError,
+ * one line naming the file: a missing or unreadable file, an unknown extension or parameter,
+ * cells that are not hexahedra (with their gmsh element types: tetrahedra, prisms, pyramids),
+ * cells in no physical volume, volumes with gaps, boundary faces in no physical surface, a
+ * surface bounding two bodies, a curved surface. The triangulation is then left empty.
+ */
+SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
+                                       const std::map<std::string, double>& geo_parameters,
+                                       Triangulation<3>& triangulation);
+
 /**
  * The names of the parameters that the `.geo` file `geo_file` declares for setting from outside
  * (`DefineConstant[name = {default, Name "Parameters/name"}]`), sorted: the keys that
