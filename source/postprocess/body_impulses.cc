@@ -55,7 +55,7 @@ void BodyImpulses<dim>::index(const std::vector<Node<dim>>& nodes,
 template <int dim>
 void BodyImpulses<dim>::start(const StepState& state)
 {
-  accumulated.forces = forces(state);
+  accumulated.forces = forces(state, true);
   accumulated.impulses.assign(n_bodies, 0.);
   accumulated.contact_impulses.assign(n_bodies, 0.);
   accumulated.external_work = 0.;
@@ -77,27 +77,33 @@ std::vector<bool> BodyImpulses<dim>::active_pair_dofs() const
 }
 
 template <int dim>
-typename BodyImpulses<dim>::Forces BodyImpulses<dim>::forces(const StepState& state) const
+typename BodyImpulses<dim>::Forces BodyImpulses<dim>::forces(const StepState& state,
+                                                             const bool initial) const
 {
   // The nodes of the active pairs carry the contact force and fixed DoFs their support's reaction
   // (a clamped bar end); elsewhere M a + Q - W is only the Newton residual, whose sum over a body
   // balance_momenta() has removed. A dissipative member balances at t_{n+1-alpha_f}, not at
   // t_{n+1}, so there every DoF's M a + Q - W counts (its sum over a body is sum M a - sum W, as
   // sum Q = 0): the momentum guard then checks the treatments' velocity corrections only.
+  // A massless DoF (mass redistribution) carries no momentum: the load on it reaches the body only
+  // through Q. At a solved state its Q - W is the Newton residual, but at the initial one
+  // (`initial`) a load acting from t = 0 (a traction on a contact surface) is not yet in balance
+  // with Q(u_0) = 0, and that imbalance counts.
   const std::vector<bool> in_active_pair = active_pair_dofs();
   const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
   Forces forces{std::vector<double>(n_bodies, 0.), std::vector<double>(n_bodies, 0.)};
   for_each_owned_row(state.external_force,
                      [&](const types::global_dof_index i, const unsigned int j)
                      {
-                       double force = state.external_force.local_element(j);
-                       if (every_dof || in_active_pair[i] || is_fixed_dof[i])
+                       double force               = state.external_force.local_element(j);
+                       const bool carries_contact = every_dof || in_active_pair[i];
+                       if (carries_contact || is_fixed_dof[i] || (initial && mass[i] == 0.))
                        {
                          const double balance = mass[i] * state.acceleration.local_element(j) +
                                                 state.internal_force.local_element(j) -
                                                 state.external_force.local_element(j);
                          force += balance;
-                         if (!is_fixed_dof[i])
+                         if (carries_contact && !is_fixed_dof[i])
                            forces.contact[dof_body[i]] += dof_direction[i] * balance;
                        }
                        forces.total[dof_body[i]] += dof_direction[i] * force;

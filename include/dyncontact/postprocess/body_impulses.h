@@ -72,8 +72,10 @@ public:
    * DoFs (M a + Q - W) plus its total external force, at `state`: with sum Q = 0 over a free body
    * this is the total force that changes its momentum, up to the Newton residual of its other
    * nodes. The contact part leaves out the external forces and the supports (fixed DoFs).
+   * `initial`: `state` is the initial one, not solved, whose massless DoFs (mass redistribution)
+   * may be out of balance (W != Q(u_0)); their Q - W then counts too.
    */
-  Forces forces(const StepState& state) const;
+  Forces forces(const StepState& state, bool initial = false) const;
 
   /**
    * Adds the impulses of the step from `before` (its state and ledger) to `state`
