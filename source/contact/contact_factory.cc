@@ -1,6 +1,7 @@
 #include <dyncontact/base/dimensions.h>
 #include <dyncontact/contact/contact_factory.h>
 #include <dyncontact/contact/contact_geometry_set.h>
+#include <dyncontact/contact/mortar_contact.h>
 #include <dyncontact/contact/node_to_segment_contact.h>
 #include <dyncontact/contact/rigid_plane_contact.h>
 
@@ -10,7 +11,8 @@ const NameTable<ContactDiscretization>& contact_discretization_names()
 {
   static const NameTable<ContactDiscretization> names{
       {"node-to-node", ContactDiscretization::node_to_node},
-      {"node-to-segment", ContactDiscretization::node_to_segment}};
+      {"node-to-segment", ContactDiscretization::node_to_segment},
+      {"mortar", ContactDiscretization::mortar}};
   return names;
 }
 
@@ -46,6 +48,17 @@ surface_contact(const typename ContactDescription<dim>::SurfacePair& surfaces,
                                                          penalty_per_area,
                                                          surfaces.search_radius,
                                                          surfaces.touching_tolerance);
+  case ContactDiscretization::mortar:
+    if constexpr (dim != 2)
+      throw InputError("Contact/discretization = mortar is implemented for 2D (axisymmetric and "
+                       "plane strain) meshes only.");
+    else
+      return std::make_unique<MortarContact<dim>>(surface_a,
+                                                  surface_b,
+                                                  kinematics,
+                                                  penalty_per_area,
+                                                  surfaces.search_radius,
+                                                  surfaces.touching_tolerance);
   }
   AssertThrow(false, ExcInternalError()); // every ContactDiscretization is a case above
   return nullptr;

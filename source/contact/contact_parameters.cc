@@ -125,12 +125,18 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
       "discretization",
       "node-to-node",
       Patterns::Selection(contact_discretization_names().selection()),
-      "How the two bodies' contact surfaces meet (axisymmetric meshes). node-to-node: each "
-      "facing node of body 1 against the node of body 2 across from it; the facing surfaces "
-      "must have matching nodes (mirrored meshes). node-to-segment: each surface node of body 1 "
-      "(slave) against its closest point on the curved quadratic faces of body 2 (master), "
-      "for any meshes; the paper's rate correction (Contact/dynamics) acts on the slave node "
-      "and the master face's nodes. Both are the same on matching meshes.");
+      "How the two bodies' contact surfaces meet (2D meshes). node-to-node: each facing node of "
+      "the slave body against the node of the master body across from it; the facing surfaces "
+      "must have matching nodes (mirrored meshes). node-to-segment: each slave surface node "
+      "against its projection on the curved quadratic faces of the master body, for any meshes; "
+      "the paper's rate correction (Contact/dynamics) acts on the slave node and the master "
+      "face's nodes. mortar: each slave node's gap weighted over its faces by its dual shape "
+      "function, against the master surface under them (dual Lagrange multipliers, "
+      "segment-based integration); passes the patch test on non-matching meshes, where "
+      "node-to-segment's pressure oscillates between vertex and mid-side nodes; the rate "
+      "correction acts on the slave node and every master node of its weights; not yet for long "
+      "sliding between flat faces (a mode grows from round-off and stops the run, doc/method.md "
+      "4.2). All three are the same on matching flat faces.");
   prm.declare_entry("penalty factor",
                     "auto",
                     Patterns::Anything(),

@@ -14,56 +14,6 @@ namespace
 /// |n_s - sum_i N_i n_i| (at most 2) below which a slave node does not face the master surface.
 constexpr double least_averaged_normal = 1e-8;
 
-/** Face `face` of `surface` with its nodes at `positions` (one per node of the surface). */
-template <int dim>
-QuadraticFace<dim> current_face(const ContactSurface<dim>& surface,
-                                const unsigned int face,
-                                const std::vector<Point<dim>>& positions)
-{
-  QuadraticFace<dim> curve;
-  for (unsigned int i = 0; i < 3; ++i)
-    curve.points[i] = positions[surface.face_nodes()[face][i]];
-  return curve;
-}
-
-/**
- * The point of `face` on the ray from `x_s` along nbar: xi with (x(xi) - x_s) x nbar(xi) = 0,
- * nbar(xi) = n_s - sum_i N_i(xi) n_i (the averaged normal of the slave node's normal and the
- * face nodes' `normals`; with zero `normals` the ray along n_s), by Newton's method from `xi`.
- * Empty if Newton does not converge to a step below 1e-14 in 20 iterations or the root lies outside
- * the face (beyond 1e-12).
- */
-template <int dim>
-std::optional<double> normal_ray_point(const QuadraticFace<dim>& face,
-                                       const std::array<Tensor<1, dim>, 3>& normals,
-                                       const Point<dim>& x_s,
-                                       const Tensor<1, dim>& n_s,
-                                       double xi)
-{
-  for (unsigned int iteration = 0; iteration < 20; ++iteration)
-  {
-    const auto N        = QuadraticFace<dim>::shape_values(xi);
-    const auto dN       = QuadraticFace<dim>::shape_derivatives(xi);
-    Tensor<1, dim> nbar = n_s, dnbar;
-    for (unsigned int i = 0; i < 3; ++i)
-    {
-      nbar -= N[i] * normals[i];
-      dnbar -= dN[i] * normals[i];
-    }
-    const Tensor<1, dim> offset = face.point(xi) - x_s;
-    const double slope =
-        face.tangent(xi) * cross_product_2d(nbar) + offset * cross_product_2d(dnbar);
-    if (slope == 0.)
-      return std::nullopt;
-    const double step = (offset * cross_product_2d(nbar)) / slope;
-    xi -= step;
-    if (std::abs(step) <= 1e-14)
-      return xi >= -1e-12 && xi <= 1. + 1e-12 ? std::optional<double>(std::clamp(xi, 0., 1.))
-                                              : std::nullopt;
-  }
-  return std::nullopt;
-}
-
 /**
  * Moves `pair`'s master point onto `faces` of `master_surface`, its nodes at `master_positions`:
  * to where the ray from the slave node (at `slave_point`) along nbar(face, xi) = n_s - sum_i
@@ -95,9 +45,9 @@ Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
   bool on_ray = false;
   for (const unsigned int face : faces)
   {
-    const auto curve      = current_face(master_surface, face, master_positions);
+    const auto curve      = quadratic_face(master_surface.face_nodes()[face], master_positions);
     const auto closest    = curve.closest_point(slave_point);
-    const auto ray_xi     = normal_ray_point(curve, normals_of(face), slave_point, n_s, closest.xi);
+    const auto ray_xi     = curve.ray_point(slave_point, n_s, normals_of(face), closest.xi);
     const double xi       = ray_xi ? *ray_xi : closest.xi;
     const double distance = curve.point(xi).distance(slave_point);
     // A point on the ray beats any closest point; among equals, the nearest.
@@ -176,7 +126,7 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
   {
     std::vector<unsigned int> faces;
     for (unsigned int face = 0; face < master_faces.size(); ++face)
-      if (current_face(this->master_surface, face, undeformed_master)
+      if (quadratic_face(master_faces[face], undeformed_master)
               .closest_point(slave_nodes[i].position)
               .distance <= search_radius)
         faces.push_back(face);

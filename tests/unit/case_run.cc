@@ -172,6 +172,49 @@ double max_force_deviation(const History& history,
   return deviation;
 }
 
+double largest_relative_difference(const History& history, const History& reference)
+{
+  EXPECT_EQ(history.n_rows(), reference.n_rows());
+  double largest = 0.;
+  for (const std::string name : {"contact_force",
+                                 "kinetic_energy",
+                                 "strain_energy",
+                                 "total_energy",
+                                 "momentum_1",
+                                 "momentum_2"})
+  {
+    const auto values = history.column(name), expected = reference.column(name);
+    double scale = 0., difference = 0.;
+    for (unsigned int row = 0; row < std::min(values.size(), expected.size()); ++row)
+    {
+      scale      = std::max(scale, std::abs(expected[row]));
+      difference = std::max(difference, std::abs(values[row] - expected[row]));
+    }
+    largest = std::max(largest, difference / scale);
+  }
+  return largest;
+}
+
+std::vector<PressureRow> pressure_rows(const std::string& text)
+{
+  std::istringstream lines(text);
+  std::string line;
+  std::getline(lines, line);
+  EXPECT_EQ(line, "x,y,gap,multiplier,pressure,active");
+  std::vector<PressureRow> rows;
+  while (std::getline(lines, line))
+  {
+    std::vector<double> fields;
+    std::istringstream values(line);
+    for (std::string value; std::getline(values, value, ',');)
+      fields.push_back(std::stod(value));
+    EXPECT_EQ(fields.size(), 6u) << line;
+    if (fields.size() == 6)
+      rows.push_back({fields[0], fields[3], fields[4], fields[5] == 1.});
+  }
+  return rows;
+}
+
 unsigned int contact_episodes(const History& history)
 {
   const auto active     = history.column("active_constraints");

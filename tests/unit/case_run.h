@@ -79,6 +79,25 @@ std::vector<std::string> paper_coarse_spheres(const std::vector<std::string>& mo
  */
 std::vector<unsigned int> contact_samples(const BarRun& run);
 
+/**
+ * The largest difference between two runs' histories (same rows) over the columns of the bodies
+ * as a whole (contact force, energies, momenta), relative to the column's largest magnitude in
+ * `reference`.
+ */
+double largest_relative_difference(const History& history, const History& reference);
+
+/** One row of contact_pressure_t<T>.csv: the slave node's current x (r), its nodal force
+ * (multiplier) and contact pressure, active or not. */
+struct PressureRow
+{
+  double x, multiplier, pressure;
+  bool active;
+};
+
+/** The rows of the text of a contact_pressure_t<T>.csv file (columns x, y, gap, multiplier,
+ * pressure, active). */
+std::vector<PressureRow> pressure_rows(const std::string& text);
+
 /** The number of contact episodes: rows with active pairs that follow a row without. */
 unsigned int contact_episodes(const History& history);
 

@@ -112,34 +112,6 @@ double last_contact_time(const History& history)
   return last;
 }
 
-/**
- * The largest difference between two runs' histories (same rows) over the columns of the bodies
- * as a whole (contact force, energies, momenta), relative to the column's largest magnitude in
- * `reference`.
- */
-double largest_relative_difference(const History& history, const History& reference)
-{
-  EXPECT_EQ(history.n_rows(), reference.n_rows());
-  double largest = 0.;
-  for (const std::string name : {"contact_force",
-                                 "kinetic_energy",
-                                 "strain_energy",
-                                 "total_energy",
-                                 "momentum_1",
-                                 "momentum_2"})
-  {
-    const auto values = history.column(name), expected = reference.column(name);
-    double scale = 0., difference = 0.;
-    for (unsigned int row = 0; row < std::min(values.size(), expected.size()); ++row)
-    {
-      scale      = std::max(scale, std::abs(expected[row]));
-      difference = std::max(difference, std::abs(values[row] - expected[row]));
-    }
-    largest = std::max(largest, difference / scale);
-  }
-  return largest;
-}
-
 /** The rods 0.001 apart on Newmark (beta = 1/4, gamma = 1/2) to t = 14, in `discretization`. */
 MeshRun rods_on_newmark(const std::string& discretization)
 {

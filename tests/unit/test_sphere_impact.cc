@@ -85,34 +85,6 @@ const MeshRun& soft_impact()
   return run;
 }
 
-/** One row of contact_pressure_t<T>.csv. */
-struct PressureRow
-{
-  double r, pressure;
-  bool active;
-};
-
-/** The rows of the text of a contact_pressure_t<T>.csv file (columns x, y, gap, multiplier,
- * pressure, active). */
-std::vector<PressureRow> pressure_rows(const std::string& text)
-{
-  std::istringstream lines(text);
-  std::string line;
-  std::getline(lines, line);
-  EXPECT_EQ(line, "x,y,gap,multiplier,pressure,active");
-  std::vector<PressureRow> rows;
-  while (std::getline(lines, line))
-  {
-    std::vector<double> fields;
-    std::istringstream values(line);
-    for (std::string value; std::getline(values, value, ',');)
-      fields.push_back(std::stod(value));
-    EXPECT_EQ(fields.size(), 6u) << line;
-    if (fields.size() == 6)
-      rows.push_back({fields[0], fields[4], fields[5] == 1.});
-  }
-  return rows;
-}
 } // namespace
 
 TEST(SphereImpact, CoarseMeshMatchesHertzWithinMeshBands)
@@ -187,23 +159,23 @@ TEST(SphereImpact, ContactPressureIsHertzianOnTheContactZoneAndZeroOutside)
   unsigned int active     = 0;
   for (const PressureRow& row : rows)
   {
-    const double p_hertz = row.r < a ? p0 * std::sqrt(1. - row.r * row.r / (a * a)) : 0.;
+    const double p_hertz = row.x < a ? p0 * std::sqrt(1. - row.x * row.x / (a * a)) : 0.;
     if (!row.active)
     {
       // An open pair carries no pressure, not even the tail of the recovery's smoothing.
-      EXPECT_EQ(row.pressure, 0.) << "open pair at r = " << row.r;
+      EXPECT_EQ(row.pressure, 0.) << "open pair at r = " << row.x;
       continue;
     }
     ++active;
-    std::cout << "active pair at r = " << row.r << ": p = " << row.pressure << ", Hertz " << p_hertz
+    std::cout << "active pair at r = " << row.x << ": p = " << row.pressure << ", Hertz " << p_hertz
               << " (p0 = " << p0 << ", a = " << a << ")\n";
     // Band: the coarse mesh's peak force is 4.5 % above Hertz and its contact radius is resolved
     // to one node spacing (0.13 of a = 0.47), so the pressure at each active node may differ from
     // Hertz's ellipse by up to about a tenth of p0 (measured: centre +1.3 %, at most 4 % of p0, at
     // the outermost active node, r = 0.41, where the ellipse drops steeply). 10 % of p0 would
     // catch a pressure recovered from the wrong nodal forces, areas or zone.
-    EXPECT_GT(row.pressure, 0.) << "active pair at r = " << row.r;
-    EXPECT_NEAR(row.pressure, p_hertz, 0.1 * p0) << "active pair at r = " << row.r;
+    EXPECT_GT(row.pressure, 0.) << "active pair at r = " << row.x;
+    EXPECT_NEAR(row.pressure, p_hertz, 0.1 * p0) << "active pair at r = " << row.x;
   }
   EXPECT_GE(active, 4u); // the nodes at r = 0, 0.13, 0.26, 0.41 lie inside a = 0.47
   EXPECT_LT(active, rows.size());

@@ -11,8 +11,9 @@ namespace dyncontact
  */
 enum class ContactDiscretization
 {
-  node_to_node,   ///< matching meshes: each slave node against the facing master node
-  node_to_segment ///< any meshes: each slave node against its projection on a master face
+  node_to_node,    ///< matching meshes: each slave node against the facing master node
+  node_to_segment, ///< any meshes: each slave node against its projection on a master face
+  mortar           ///< any meshes: each slave node's dual-weighted gap over the master surface
 };
 
 /** The names of Contact/discretization (defined beside create_contact()). */

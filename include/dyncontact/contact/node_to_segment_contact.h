@@ -103,6 +103,15 @@ public:
   std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
                                         const std::vector<double>& multipliers) const override;
 
+  /** The index in the slave surface's nodes() of pair `k`'s slave node. */
+  unsigned int slave_node(const unsigned int k) const { return slave_node_of_pair[k]; }
+
+  /** Pair `k`'s candidate faces: indices into the master surface's face_nodes(). */
+  const std::vector<unsigned int>& candidate_faces(const unsigned int k) const
+  {
+    return candidate_faces_of_pair[k];
+  }
+
 private:
   ContactSurface<dim> slave_surface, master_surface;
   /** Per pair: index of its slave node in slave_surface.nodes(). */

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
+#include <vector>
 
 namespace dyncontact
 {
@@ -89,6 +91,42 @@ struct QuadraticFace
     return nearest;
   }
 
+  /**
+   * The point of the face on the ray from `x_s` along the averaged normal nbar(xi) = n_s -
+   * sum_i N_i(xi) normals[i] (`normals` the face's nodal normals in the order of `points`; all
+   * zero for the ray along n_s alone): the parameter xi of the root of (x(xi) - x_s) x nbar(xi) =
+   * 0, by Newton's method from `xi`. 2D only. Empty if Newton does not converge to a step below
+   * 1e-14 in 20 iterations or the root lies outside the face (beyond 1e-12); a root within that
+   * tolerance of a face end is clamped onto it.
+   */
+  std::optional<double> ray_point(const Point<dim>& x_s,
+                                  const Tensor<1, dim>& n_s,
+                                  const std::array<Tensor<1, dim>, 3>& normals,
+                                  double xi) const
+  {
+    for (unsigned int iteration = 0; iteration < 20; ++iteration)
+    {
+      const auto N        = shape_values(xi);
+      const auto dN       = shape_derivatives(xi);
+      Tensor<1, dim> nbar = n_s, dnbar;
+      for (unsigned int i = 0; i < 3; ++i)
+      {
+        nbar -= N[i] * normals[i];
+        dnbar -= dN[i] * normals[i];
+      }
+      const Tensor<1, dim> offset = point(xi) - x_s;
+      const double slope = tangent(xi) * cross_product_2d(nbar) + offset * cross_product_2d(dnbar);
+      if (slope == 0.)
+        return std::nullopt;
+      const double step = (offset * cross_product_2d(nbar)) / slope;
+      xi -= step;
+      if (std::abs(step) <= 1e-14)
+        return xi >= -1e-12 && xi <= 1. + 1e-12 ? std::optional<double>(std::clamp(xi, 0., 1.))
+                                                : std::nullopt;
+    }
+    return std::nullopt;
+  }
+
 private:
   static constexpr unsigned int max_newton_iterations = 50;
 
@@ -101,4 +139,17 @@ private:
     return sum;
   }
 };
+/**
+ * Face `nodes` (three indices into `positions`, in the order of ContactSurface::face_nodes()) of a
+ * surface whose nodes are at `positions`.
+ */
+template <int dim>
+QuadraticFace<dim> quadratic_face(const std::vector<unsigned int>& nodes,
+                                  const std::vector<Point<dim>>& positions)
+{
+  QuadraticFace<dim> face;
+  for (unsigned int i = 0; i < 3; ++i)
+    face.points[i] = positions[nodes[i]];
+  return face;
+}
 } // namespace dyncontact

@@ -1,0 +1,129 @@
+#pragma once
+
+#include <dyncontact/base/global.h>
+#include <dyncontact/contact/contact_geometry.h>
+#include <dyncontact/contact/contact_pair.h>
+#include <dyncontact/contact/contact_surface.h>
+#include <dyncontact/contact/node_to_segment_contact.h>
+#include <dyncontact/discretization/kinematics.h>
+
+#include <map>
+#include <vector>
+
+namespace dyncontact
+{
+/**
+ * Mortar contact on Q2 faces (2D: plane strain or the axisymmetric meridian plane) with dual
+ * Lagrange multipliers (Wohlmuth 2000; Popp, Gee & Wall, IJNME 79, 2009, for the quadratic
+ * case): the non-penetration condition of each slave node j is imposed on the weighted gap
+ *   g_j = n_j . (sum_m M_jm x_m - D_j x_j),  M_jm = integral over the slave surface of
+ *   psi_j N_m(proj), D_j = integral of N_j,
+ * the integrals taken over the deformed slave surface with the kinematics' measure factor (2 pi r
+ * in axisymmetry), psi_j the dual shape functions, biorthogonal to the slave face's N_k
+ * (integral of psi_j N_k = delta_jk D_j on every face, so the slave side of the weighted gap is
+ * D_j x_j exactly), N_m(proj) the master face's shape functions at the point the ray from the
+ * slave point along the interpolated slave normal meets. A pair is then a slave node against the
+ * master nodes with the weights w_m = M_jm / sum_m M_jm, which sum to one (its forces balance):
+ * a ContactPair as node-to-segment's, whose master point is the psi_j-weighted mean of the master
+ * surface over the slave node's faces instead of one projected point. The multiplier stays the
+ * nodal force.
+ *
+ * Why: node-to-segment's point projection passes the patch test only on matching Q2 meshes;
+ * between non-matching ones the master nodes' forces N_m(xi_j) lambda_j are not those of a
+ * smooth traction, and Hertz's line contact of a cylinder on a block came out with a pressure
+ * alternating by 10-21 % of p0 between vertex and mid-side nodes. The mortar weights transmit a
+ * constant pressure exactly (the patch test, on any non-matching meshes).
+ *
+ * Integration (segment-based): each slave face is split at the parameters where the rays through
+ * the master faces' end points leave it; on every piece a 6-point Gauss rule, the master face hit
+ * nearest to the slave point chosen where several are (a curved master surface seen from both
+ * sides). Exact for straight faces; on curved faces to the rule's accuracy.
+ *
+ * Pairs, candidates, normals, penalty stiffnesses and the touching tolerance are node-to-segment
+ * contact's (NodeToSegmentContact, built inside), whose projection remains where the mortar row is
+ * not defined: a slave node whose dual area D_j is below 1/10 of its lumped area (the vertex on
+ * the axis of an axisymmetric model, whose D_j vanishes) or whose faces are not wholly covered by
+ * the master surface (to 1e-6 of D_j; the master surface ends under them). Within a time step the
+ * pair's normal is held at u_n as in node-to-segment contact; the weights follow the Newton
+ * iterates (update_master_points()), their change with u left out of the rows.
+ *
+ * Only 2D meshes of Q2 elements.
+ */
+template <int dim>
+class MortarContact : public ContactGeometry<dim>
+{
+public:
+  /**
+   * The pairs of NodeToSegmentContact(slave_surface, master_surface, penalty_stiffness_per_area,
+   * search_radius, touching_tolerance) with mortar weights at the reference configuration, the
+   * surfaces' measure from `kinematics` (which must outlive this). Throws what that constructor
+   * throws, and InputError, naming both bodies, for a pair whose mortar reference gap is below
+   * -`touching_tolerance` (overlap).
+   */
+  MortarContact(const ContactSurface<dim>& slave_surface,
+                const ContactSurface<dim>& master_surface,
+                const Kinematics<dim>& kinematics,
+                double penalty_stiffness_per_area,
+                double search_radius,
+                double touching_tolerance);
+
+  /** The candidate pairs with their reference masters, weights and normals. */
+  const std::vector<ContactPair<dim>>& pairs() const override { return candidate_pairs; }
+
+  /**
+   * Node-to-segment contact's normals at `displacement`, and the mortar masters and weights there
+   * where defined (else the projected point's). Throws SolverFailure as node-to-segment contact.
+   */
+  void update_pairs(const BorderDisplacement<dim>& displacement,
+                    std::vector<ContactPair<dim>>& pairs) const override;
+
+  /** The mortar masters and weights at `displacement`, each pair's normal kept. */
+  void update_master_points(const BorderDisplacement<dim>& displacement,
+                            std::vector<ContactPair<dim>>& pairs) const override;
+
+  /**
+   * The slave node, the nodes of its own candidate faces and those of the candidate faces of
+   * every slave node sharing a face with it.
+   */
+  std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
+
+  /** The nodes of both surfaces. */
+  std::vector<Node<dim>> surface_nodes() const override;
+
+  /** ContactSurface::consistent_pressures() of the slave surface at the pairs' slave nodes. */
+  std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
+                                        const std::vector<double>& multipliers) const override;
+
+private:
+  /** One slave node's integrals: D_j, the covered part of it, and M_jm by master node m. */
+  struct MortarRow
+  {
+    double dual_area    = 0.;
+    double covered_area = 0.;
+    std::map<unsigned int, double> master_integrals;
+  };
+
+  NodeToSegmentContact<dim> point_projection;
+  ContactSurface<dim> slave_surface, master_surface;
+  const Kinematics<dim>& kinematics;
+  /** Per slave face: the master faces it is integrated against (its nodes' candidate faces). */
+  std::vector<std::vector<unsigned int>> master_faces_of_slave_face;
+  std::vector<ContactPair<dim>> candidate_pairs;
+
+  /** Every slave node's row, the surfaces' nodes at the given positions. */
+  std::vector<MortarRow> mortar_rows(const std::vector<Point<dim>>& slave_positions,
+                                     const std::vector<Point<dim>>& master_positions) const;
+
+  /** Adds slave face `face`'s integrals to `rows`. */
+  void integrate_face(unsigned int face,
+                      const std::vector<Point<dim>>& slave_positions,
+                      const std::vector<Tensor<1, dim>>& slave_normals,
+                      const std::vector<Point<dim>>& master_positions,
+                      std::vector<MortarRow>& rows) const;
+
+  /** Sets the mortar masters and weights of every pair of `pairs` where its row is defined. */
+  void apply_mortar_weights(const std::vector<Point<dim>>& slave_positions,
+                            const std::vector<Point<dim>>& master_positions,
+                            std::vector<ContactPair<dim>>& pairs) const;
+};
+} // namespace dyncontact
