@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Non-matching meshes against Hertz (issue 12, acceptances C and D), small strain (linear elastic),
-# the paper's modified Newmark, node-to-segment contact:
+# the paper's modified Newmark, node-to-segment contact (the sphere on a block: mortar, its prm's):
 #  C  identical spheres (prm/spheres_rho0.001.prm, R = 8, rho = 0.001): meshes/two_spheres.geo
 #     (matching, node-to-node) against meshes/two_spheres_nonmatching.geo (body 2 with 4 more
 #     divisions, node-to-segment), Refinement 0 and 1, dt = 0.0025;
