@@ -243,6 +243,16 @@ std::string first_order_mesh(const std::string& mesh_file,
   // The first pass declares the parameters (with their defaults) in gmsh's ONELAB database;
   // the second reads the file again with the values set there.
   open_file(session, mesh_file);
+  // A file of the other dimension would be meshed (or read) into cells of the wrong kind: a 3D
+  // .geo meshed in 2D gives the quadrilaterals of its surfaces, at any z.
+  const int file_dim = gmsh::model::getDimension();
+  if (file_dim >= 2 && file_dim != dim)
+    throw InputError(
+        about(mesh_file) + "it is a " + std::to_string(file_dim) + "D geometry, but " +
+        (dim == 2 ? "Problem/geometry = axisymmetric mesh and plane strain mesh take 2D ones (the "
+                    "(r, z) or (x, y) plane: physical surface b = body b); 3D meshes are not a "
+                    "Problem/geometry yet."
+                  : "a 3D mesh needs volumes (physical volume b = body b)."));
   if (!geo_parameters.empty())
   {
     const std::vector<std::string> declared = declared_parameters();

@@ -119,5 +119,11 @@ TEST(GmshSolidMesh, MeshesItCannotTakeAreOneLineErrors)
                             "Physical Volume(1) = {v[1]};\n"
                             "Physical Surface(1) = {f[1], v[0], v[2], v[3], v[4], v[5]};\n"),
       "physical surface 1 (of body 1) is not planar");
+  // A 2D mesh (the rectangle of quadrilaterals alone): no volumes.
+  expect_solid_input_error(
+      directory.write("flat.geo",
+                      box + "f[] = Extrude {0, 1, 0} { Curve{e[1]}; Layers{2}; Recombine; };\n"
+                            "Physical Surface(1) = {f[1]};\n"),
+      "it is a 2D geometry, but a 3D mesh needs volumes");
 }
 } // namespace dyncontact::testing

@@ -131,10 +131,10 @@ namespace dyncontact::testing
 {
 // Acceptance D of the non-matching issue, pinned on the coarsest mesh: the dissimilar spheres
 // (prm/dissimilar_spheres.prm: R1 = 8, R2 = 4, E and rho differing by 2, meshes matching nothing,
-// node-to-segment, modified scheme) against their two references, Hertz and the finite-sphere law
+// mortar contact, modified scheme) against their two references, Hertz and the finite-sphere law
 // (each sphere its own approach, doc/method.md). The law, not Hertz, is what the run converges to
-// (bench/non_matching_hertz.sh: peak +2.10, +1.88, +2.21 % from Hertz on Refinement 0, 1, 2 against
-// the law's +2.41 %; Refinement 2 at dt / 2 is -0.07 % from the law).
+// (bench/non_matching_hertz.sh: peak +1.74, +1.74, +2.20 % from Hertz on Refinement 0, 1, 2 against
+// the law's +2.41 %; Refinement 2 at dt / 2 is -0.09 % from the law).
 TEST(NonMatchingImpact, DissimilarSpheresFollowTheFiniteSphereLawNotHertz)
 {
   const std::vector<std::string> coarse = {
@@ -162,11 +162,12 @@ TEST(NonMatchingImpact, DissimilarSpheresFollowTheFiniteSphereLawNotHertz)
             << computed.impulse << ": law " << 100 * relative(computed.impulse, law->impulse())
             << " %\n";
   // The law lies 2.4 % above Hertz in peak and 1.7 % below in duration; this coarse mesh (about 4
-  // Q2 elements across the contact radius of the smaller sphere) is within 0.3 % of the law in
-  // both (measured: peak -0.30 %, duration +0.30 %), so 0.6 % holds it to the law and fails if the
-  // run follows Hertz instead (or a refactoring moves it by twice its discretization error).
-  EXPECT_LT(std::abs(relative(computed.peak_force, law->maximum_force())), 6e-3);
-  EXPECT_LT(std::abs(relative(computed.duration, law->contact_duration())), 6e-3);
+  // Q2 elements across the contact radius of the smaller sphere) is within 0.7 % of the law in
+  // both (measured with mortar contact: peak -0.65 %, duration +0.35 %; with node-to-segment -0.30
+  // and +0.30 %), so 1 % holds it to the law and fails if the run follows Hertz instead (2.4 % and
+  // 1.7 % away) or a refactoring moves it by more than its discretization error.
+  EXPECT_LT(std::abs(relative(computed.peak_force, law->maximum_force())), 1e-2);
+  EXPECT_LT(std::abs(relative(computed.duration, law->contact_duration())), 1e-2);
   EXPECT_GT(relative(computed.peak_force, hertz->maximum_force()), 1.2e-2);
   // Impulse: the momenta exchanged, 2 m* v in both references (the bodies separate elastically);
   // the trapezoid over the samples misses the force between the last sample and the release
