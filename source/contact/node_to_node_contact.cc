@@ -153,7 +153,7 @@ NodeToNodeContact<dim>::NodeToNodeContact(ContactSurface<dim> surface_a,
                      " across from them (first at " + first_unmatched.str() +
                      "): node-to-node contact needs matching (e.g. mirrored) meshes of the facing "
                      "surfaces; for meshes that do not match, set Contact/discretization = "
-                     "node-to-segment.");
+                     "mortar (or node-to-segment).");
 }
 
 template <int dim>
