@@ -135,8 +135,9 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
       "segment-based integration); passes the patch test on non-matching meshes, where "
       "node-to-segment's pressure oscillates between vertex and mid-side nodes; the rate "
       "correction acts on the slave node and every master node of its weights; not yet for long "
-      "sliding between flat faces (a mode grows from round-off and stops the run, doc/method.md "
-      "4.2). All three are the same on matching flat faces.");
+      "sliding between flat faces at strains far beyond small strain (a mode grows from "
+      "round-off and stops the run, doc/method.md 4.2). All three are the same on matching flat "
+      "faces.");
   prm.declare_entry("penalty factor",
                     "auto",
                     Patterns::Anything(),
