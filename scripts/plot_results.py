@@ -221,12 +221,23 @@ def bodies_of(table, prefix):
 
 def run_label(run_dir):
     """Label a run by its contact dynamics in parameters.prm (none: the classical Newmark,
-    taylor-papadopoulos: the paper's modified Newmark), falling back to the directory name."""
-    dynamics = read_parameters(run_dir).get('contact/dynamics')
-    names = {'none': 'classical Newmark', 'taylor-papadopoulos': 'modified Newmark'}
+    taylor-papadopoulos: the paper's modified Newmark; another integrator in place of Newmark),
+    falling back to the directory name."""
+    prm = read_parameters(run_dir)
+    dynamics = prm.get('contact/dynamics')
+    integrator = prm.get('time integration/integrator', 'newmark')
+    scheme = 'Newmark' if integrator == 'newmark' else integrator
+    names = {'none': f'classical {scheme}', 'taylor-papadopoulos': f'modified {scheme}'}
     if dynamics is None:
         return os.path.basename(os.path.normpath(run_dir))
     return names.get(dynamics, dynamics)
+
+
+def coordinate_names(run_dirs):
+    """The names of the mesh coordinates in the plots' labels: (x, y) if every run is plane strain
+    (its x = 0 the symmetry plane of a half model), else the axisymmetric (r, z)."""
+    plane = all(read_parameters(d).get('problem/geometry') == 'plane strain mesh' for d in run_dirs)
+    return ('x', 'y') if plane and run_dirs else ('r', 'z')
 
 
 def sphere_label(run_dir, label):
@@ -820,7 +831,7 @@ def negative_pressure(profiles):
             'not tension', r, p)
 
 
-def plot_pressure(path, title, panels, have_hertz, labels, data):
+def plot_pressure(path, title, panels, have_hertz, labels, data, names=('r', 'z')):
     """Contact pressure profiles p(r), one panel per run, each profile time in its own colour:
     FE pairs as markers (hollow: inactive), Hertz's ellipse as a line. r runs to PRESSURE_RANGE
     times the largest Hertz contact radius (further if FE pairs are active beyond). FE values
@@ -900,7 +911,7 @@ def plot_pressure(path, title, panels, have_hertz, labels, data):
                     bbox=dict(facecolor='white', edgecolor='grey', alpha=0.9))
         ax.axhline(0, color='black', lw=0.6)
         ax.set_title(label)
-        ax.set_xlabel('radius r (current, node of body 1)')
+        ax.set_xlabel(('radius r' if names[0] == 'r' else 'x') + ' (current, node of body 1)')
         ax.grid(alpha=0.3)
     axes[0][0].set_xlim(-0.02 * rmax, rmax)  # the pair on the axis in full
     axes[0][0].set_ylim(bottom - 0.15 * (top - bottom), top)  # room for the notes
@@ -1011,7 +1022,7 @@ def deformed_outlines(bodies, index, profile, magnify):
     return np.concatenate([current, current[:, :1]], axis=1)
 
 
-def plot_mesh(path, title, meshes, labels):
+def plot_mesh(path, title, meshes, labels, names=('r', 'z')):
     """Deformed meshes at one time, full section mirrored about r = 0, one panel per run, with the
     undeformed boundary dashed. `meshes` holds per run (bodies, outlines, undeformed boundary
     curves), or a message saying why there is none."""
@@ -1038,8 +1049,8 @@ def plot_mesh(path, title, meshes, labels):
         ax.axvline(0, color='grey', lw=0.6, ls='-.')
         ax.set_aspect('equal')
         ax.autoscale_view()
-        ax.set_xlabel('r (mirrored for r < 0)')
-        ax.set_ylabel('z')
+        ax.set_xlabel(f'{names[0]} (mirrored for {names[0]} < 0)')
+        ax.set_ylabel(names[1])
         ax.legend(handles=handles, fontsize='small', loc='upper right')
         ax.grid(alpha=0.3)
     fig.suptitle(wrap_title(title, fig.get_figwidth()))
@@ -1207,7 +1218,7 @@ def contact_view(run_dir, run, time, profile_path, pressure_path, scale):
     return view
 
 
-def plot_contact(path, title, views, labels, data):
+def plot_contact(path, title, views, labels, data, names=('r', 'z')):
     """The deformed contact zone at one time, a row per run: the exaggerated picture and the
     surface profiles against Hertz (contact_view())."""
     fig, axes = plt.subplots(len(views), 2, figsize=(14, 4.6 * len(views)), squeeze=False,
@@ -1220,6 +1231,7 @@ def plot_contact(path, title, views, labels, data):
                 ax.axis('off')
             continue
         half_width, centre, scale = view['half_width'], view['centre'], view['scale']
+        extent = 'radius' if names[0] == 'r' else 'half-width'
         low, high = view['z_limits']
         current = view['current']
         data.add(label, 'window', 'limits (x: r, y: z)', [-half_width, half_width], [low, high])
@@ -1282,19 +1294,20 @@ def plot_contact(path, title, views, labels, data):
                     for s in sides:
                         ax.axvline(s * radius, color=colour, lw=0.8, ls=':')
                 handles.append(matplotlib.lines.Line2D([], [], color=colour, lw=0.8, ls=':',
-                                                       label=f'contact radius, {name}: '
+                                                       label=f'contact {extent}, {name}: '
                                                              f'{nice(radius, 3)}'))
         picture.set_xlim(-half_width, half_width)
         picture.set_ylim(low, high)
         picture.set_aspect(scale)
-        picture.set_xlabel('r (mirrored for r < 0)')
-        picture.set_ylabel(f'z   (drawn ×{nice(scale, 2)})')
-        picture.set_title(f'{label}: deformed, z enlarged ×{nice(scale, 2)} about the contact')
+        picture.set_xlabel(f'{names[0]} (mirrored for {names[0]} < 0)')
+        picture.set_ylabel(f'{names[1]}   (drawn ×{nice(scale, 2)})')
+        picture.set_title(f'{label}: deformed, {names[1]} enlarged ×{nice(scale, 2)} about the '
+                          'contact')
         picture.legend(handles=handles, fontsize='x-small', loc='upper right', framealpha=0.9)
         profile.axhline(0, color='grey', lw=0.6)
         profile.set_xlim(0, half_width)
-        profile.set_xlabel('r')
-        profile.set_ylabel('z − z(r = 0)')
+        profile.set_xlabel(names[0])
+        profile.set_ylabel(f'{names[1]} − {names[1]}({names[0]} = 0)')
         profile.set_title('surfaces: FE (dots at nodes), Hertz; dashed: undeformed', fontsize='small')
         profile.legend(fontsize='x-small', loc='best')
         profile.grid(alpha=0.3)
@@ -1691,7 +1704,7 @@ def main(argv=None):
         path = os.path.join(output, 'contact_pressure.png')
         if plot_pressure(path, 'Contact pressure' + suffix + (', FE vs Hertz' if any(spheres) else ''),
                          [pressure_profiles(d, run, args.tmax) for d, run in zip(args.run_dirs, runs)],
-                         spheres, mesh_labels, sheet()):
+                         spheres, mesh_labels, sheet(), coordinate_names(args.run_dirs)):
             print(path)
 
         # Profiles along the bars against the exact solution.
@@ -1728,7 +1741,8 @@ def main(argv=None):
             if any(not isinstance(v, str) for v in views):
                 path = os.path.join(output, f'deformed_contact_t{time}.png')
                 plot_contact(path, f'Deformed contact zone at t = {time}' + suffix, views,
-                             [mesh_labels[i] for i in mesh_runs], sheet())
+                             [mesh_labels[i] for i in mesh_runs], sheet(),
+                             coordinate_names([args.run_dirs[i] for i in mesh_runs]))
                 print(path)
                 continue
             meshes, magnifications = [], []
@@ -1751,7 +1765,8 @@ def main(argv=None):
                      f'displacements relative to each body\'s rigid motion magnified {scale}')
             path = os.path.join(output, f'deformed_mesh_t{time}.png')
             plot_mesh(path, f'Deformed mesh at t = {time}' + suffix + f'\n{scale}', meshes,
-                      [mesh_labels[i] for i in mesh_runs])
+                      [mesh_labels[i] for i in mesh_runs],
+                      coordinate_names([args.run_dirs[i] for i in mesh_runs]))
             print(path)
     except (InputError, OSError) as e:
         print(f'{os.path.basename(sys.argv[0])}: error: {e}', file=sys.stderr)
