@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <optional>
 
@@ -14,7 +15,7 @@ namespace dyncontact
 namespace
 {
 /// Gauss points per piece of a slave face: exact for polynomials of degree 11 (psi_j N_m times
-/// the measure of a straight face, degree 5 in plane strain and 6 in axisymmetry).
+/// the measure of a straight face, degree 4 in plane strain and 5 in axisymmetry).
 constexpr unsigned int gauss_points = 6;
 /// A slave node keeps the projected point if its dual area is below this fraction of its lumped
 /// area: its psi_j integrates to (almost) nothing, and the weights M_jm / D_j would be ratios of
@@ -113,10 +114,14 @@ MortarContact<dim>::MortarContact(const ContactSurface<dim>& slave_surface,
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   }
 
-  apply_mortar_weights(
+  const std::vector<bool> mortar = apply_mortar_weights(
       slave_surface.reference_positions(), master_surface.reference_positions(), candidate_pairs);
-  for (ContactPair<dim>& pair : candidate_pairs)
+  for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
   {
+    ContactPair<dim>& pair = candidate_pairs[k];
+    // The node's own position, not the point node-to-segment contact may have moved it onto.
+    if (mortar[k])
+      pair.slave.position = slave_surface.nodes()[point_projection.slave_node(k)].position;
     // As node-to-segment contact: touching bodies start closed, overlapping ones are refused.
     const double gap = pair.reference_gap();
     if (std::abs(gap) <= touching_tolerance)
@@ -246,23 +251,31 @@ MortarContact<dim>::mortar_rows(const std::vector<Point<dim>>& slave_positions,
 }
 
 template <int dim>
-void MortarContact<dim>::apply_mortar_weights(const std::vector<Point<dim>>& slave_positions,
-                                              const std::vector<Point<dim>>& master_positions,
-                                              std::vector<ContactPair<dim>>& pairs) const
+std::vector<bool>
+MortarContact<dim>::apply_mortar_weights(const std::vector<Point<dim>>& slave_positions,
+                                         const std::vector<Point<dim>>& master_positions,
+                                         std::vector<ContactPair<dim>>& pairs) const
 {
   const std::vector<MortarRow> rows = mortar_rows(slave_positions, master_positions);
   const std::vector<double> lumped  = slave_surface.lumped_areas(slave_positions);
+  std::vector<bool> mortar(pairs.size(), false);
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
     const unsigned int node = point_projection.slave_node(k);
     const MortarRow& row    = rows[node];
-    if (row.dual_area < least_dual_area_fraction * lumped[node] ||
-        row.covered_area < least_coverage * row.dual_area)
+    // Written so that NaN integrals (a collapsed face) keep the projected point too.
+    bool defined = row.dual_area >= least_dual_area_fraction * lumped[node] &&
+                   row.covered_area >= least_coverage * row.dual_area;
+    for (const auto& master : row.master_integrals)
+      defined = defined && std::isfinite(master.second);
+    if (!defined)
       continue;
     pairs[k].masters.clear();
     for (const auto& [master, integral] : row.master_integrals)
       pairs[k].masters.push_back({master_surface.nodes()[master], integral / row.covered_area});
+    mortar[k] = true;
   }
+  return mortar;
 }
 
 template <int dim>

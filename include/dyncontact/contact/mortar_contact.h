@@ -42,8 +42,12 @@ namespace dyncontact
  * Pairs, candidates, normals, penalty stiffnesses and the touching tolerance are node-to-segment
  * contact's (NodeToSegmentContact, built inside), whose projection remains where the mortar row is
  * not defined: a slave node whose dual area D_j is below 1/10 of its lumped area (the vertex on
- * the axis of an axisymmetric model, whose D_j vanishes) or whose faces are not wholly covered by
- * the master surface (to 1e-6 of D_j; the master surface ends under them). Within a time step the
+ * the axis of an axisymmetric model, whose D_j vanishes), whose faces have less than half of D_j
+ * over the master surface (the master surface ends under them; above half, the weights are
+ * normalized by the covered part), or whose integrals are not finite (a collapsed face). A mortar
+ * pair's slave position is the node's own (not node-to-segment's, which may have been moved onto
+ * its projected point), moved along the normal by the mortar reference gap if that is within the
+ * touching tolerance. Within a time step the
  * pair's normal is held at u_n as in node-to-segment contact; the weights follow the Newton
  * iterates (update_master_points()), their change with u left out of the rows.
  *
@@ -121,9 +125,12 @@ private:
                       const std::vector<Point<dim>>& master_positions,
                       std::vector<MortarRow>& rows) const;
 
-  /** Sets the mortar masters and weights of every pair of `pairs` where its row is defined. */
-  void apply_mortar_weights(const std::vector<Point<dim>>& slave_positions,
-                            const std::vector<Point<dim>>& master_positions,
-                            std::vector<ContactPair<dim>>& pairs) const;
+  /**
+   * Sets the mortar masters and weights of every pair of `pairs` where its row is defined; returns
+   * per pair whether it was.
+   */
+  std::vector<bool> apply_mortar_weights(const std::vector<Point<dim>>& slave_positions,
+                                         const std::vector<Point<dim>>& master_positions,
+                                         std::vector<ContactPair<dim>>& pairs) const;
 };
 } // namespace dyncontact
