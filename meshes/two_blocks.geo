@@ -9,6 +9,8 @@
 // Parameters, settable from outside (gmsh -setnumber NAME VALUE, or dyncontact's Mesh/geo
 // parameters):
 //   Width   extent in x [length], > 0                                                     (1)
+//   Width1  extent in x of block 1 alone [length], > 0; 0: Width (a narrower block 1 leaves
+//           block 2's bottom face reaching beyond the end of block 1's top face)          (0)
 //   Height  extent in y of each block [length], > 0                                       (0.5)
 //   Gap     distance between the facing faces [length], >= 0                              (0)
 //   X0      x of the left sides [length]                                                  (0)
@@ -30,6 +32,7 @@
 
 DefineConstant[
   Width  = {1,   Name "Parameters/Width"},
+  Width1 = {0,   Name "Parameters/Width1"},
   Height = {0.5, Name "Parameters/Height"},
   Gap    = {0,   Name "Parameters/Gap"},
   X0     = {0,   Name "Parameters/X0"},
@@ -39,6 +42,9 @@ DefineConstant[
   OnAxis = {0,   Name "Parameters/OnAxis"}
 ];
 
+If (Width1 < 0)
+  Error("two_blocks.geo: Width1 = %g, but it must be > 0 (or 0: Width)", Width1);
+EndIf
 If (Width <= 0 || Height <= 0 || Gap < 0)
   Error("two_blocks.geo: Width = %g, Height = %g, Gap = %g, but Width and Height must be > 0 and Gap >= 0", Width, Height, Gap);
 EndIf
@@ -49,8 +55,9 @@ EndIf
 For b In {0:1}
   y0 = (b == 0) ? -Height : Gap;
   p1 = newp; Point(p1) = {X0, y0, 0};
-  p2 = newp; Point(p2) = {X0 + Width, y0, 0};
-  p3 = newp; Point(p3) = {X0 + Width, y0 + Height, 0};
+  w = (b == 0 && Width1 > 0) ? Width1 : Width;
+  p2 = newp; Point(p2) = {X0 + w, y0, 0};
+  p3 = newp; Point(p3) = {X0 + w, y0 + Height, 0};
   p4 = newp; Point(p4) = {X0, y0 + Height, 0};
   bottom[b] = newl; Line(bottom[b]) = {p1, p2};
   right[b]  = newl; Line(right[b])  = {p2, p3};

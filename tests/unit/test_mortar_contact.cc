@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "case_run.h"
+#include "mesh_set_up.h"
 
 namespace dyncontact::testing
 {
@@ -280,5 +281,78 @@ TEST(MortarContact, FlatRodEndsAtSmallStrainMatchNodeToNode)
       largest_relative_difference(run("mortar").history(), run("node-to-node").history());
   std::cout << "  flat rod ends at E = 100: mortar against node-to-node " << difference << "\n";
   EXPECT_LE(difference, 1e-6);
+}
+
+// The mortar pairs themselves, without a run, on the patch test's touching flat faces (4 and 5
+// cells across, axisymmetric and plane strain) and with block 1, the master, cut to 0.85 of the
+// width, so that the master surface ends a quarter into the slave's last face [0.8, 1]:
+//  - every pair's weights sum to one (to 1e-14): its forces balance;
+//  - every master node of a pair is among the nodes coupled_nodes() declares (the sparsity is
+//    built from them once);
+//  - where the master surface covers a slave node's faces, the pair's master point is the slave
+//    node itself (to 1e-14 of the width): biorthogonality makes the dual-weighted mean of a linear
+//    field its value at the node, sum_m M_jm x_m = int psi_j x dA = D_j x_j, on any meshes and with
+//    2 pi r; node-to-segment gets this too, so the check is on the weights' arithmetic;
+//  - where the master surface ends under the slave face, the slave nodes beyond its end (0.9, 1)
+//    have less than half of their dual area over it and keep node-to-segment's projected point,
+//    clamped to the master's end (x = 0.85); the vertex at 0.8, more than half covered, has
+//    mortar weights normalized by the covered part, its master point on the master surface
+//    between 0.6 and 0.85 (not at the node: the covered part is not symmetric about it).
+TEST(MortarContact, PairsBalanceReproduceFlatFacesAndFallBackBeyondTheMaster)
+{
+  const std::vector<std::vector<std::string>> cases = {{},
+                                                       {"Problem/geometry=plane strain mesh",
+                                                        "Mesh/geo parameters=NX1: 4, NX2: 5, NY: 2",
+                                                        "Boundary/number of symmetry planes=2",
+                                                        "Boundary/Symmetry 1/boundary=1",
+                                                        "Boundary/Symmetry 2/boundary=8"}};
+  for (const bool shorter_master : {false, true})
+    for (const auto& section : cases)
+    {
+      std::vector<std::string> overrides = section;
+      if (shorter_master)
+        overrides.push_back("Mesh/geo parameters=NX1: 4, NX2: 5, NY: 2, Width1: 0.85" +
+                            std::string(section.empty() ? ", OnAxis: 1" : ""));
+      SCOPED_TRACE((section.empty() ? "axisymmetric" : "plane strain") +
+                   std::string(shorter_master ? ", master 0.85 wide" : ""));
+      const MeshSetUp setup("tests/cases/blocks_patch.prm", overrides);
+      const Contact<2> contact                 = setup.contact();
+      const ContactGeometry<2>& geometry       = *contact.surfaces;
+      const std::vector<ContactPair<2>>& pairs = geometry.pairs();
+      // The slave node at x = 1 lies 0.15 from the shorter master, beyond the search radius
+      // (the gap plus a quarter of the blocks' height, 0.125): no pair.
+      ASSERT_EQ(pairs.size(), shorter_master ? 10u : 11u);
+      unsigned int mortar = 0;
+      for (unsigned int k = 0; k < pairs.size(); ++k)
+      {
+        double sum = 0.;
+        Point<2> master_point;
+        std::vector<types::global_dof_index> coupled;
+        for (const Node<2>& node : geometry.coupled_nodes(k))
+          coupled.push_back(node.dofs[0]);
+        for (const MasterNode<2>& master : pairs[k].masters)
+        {
+          sum += master.weight;
+          master_point += master.weight * master.node.position;
+          EXPECT_NE(std::find(coupled.begin(), coupled.end(), master.node.dofs[0]), coupled.end())
+              << "pair " << k;
+        }
+        EXPECT_NEAR(sum, 1., 1e-14) << "pair " << k;
+        const Point<2> slave = pairs[k].slave.position;
+        EXPECT_NEAR(master_point[1], 0., 1e-14) << "pair " << k;
+        mortar += pairs[k].masters.size() > 3;
+        if (!shorter_master || slave[0] < 0.75) // faces wholly over the master surface
+          EXPECT_NEAR(master_point[0], slave[0], 1e-14) << "pair " << k;
+        else if (slave[0] > 0.85) // less than half of the dual area covered: projected, clamped
+          EXPECT_NEAR(master_point[0], 0.85, 1e-14) << "pair " << k;
+        else // the vertex at 0.8: its face [0.8, 1] covered to 0.85, the weights normalized
+        {
+          EXPECT_GT(pairs[k].masters.size(), 3u) << "pair " << k;
+          EXPECT_GE(master_point[0], 0.6) << "pair " << k;
+          EXPECT_LE(master_point[0], 0.85) << "pair " << k;
+        }
+      }
+      EXPECT_GE(mortar, 7u); // the interior pairs span two master faces
+    }
 }
 } // namespace dyncontact::testing
