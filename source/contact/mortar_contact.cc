@@ -292,10 +292,12 @@ template <int dim>
 void MortarContact<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
                                               std::vector<ContactPair<dim>>& pairs) const
 {
-  point_projection.update_master_points(displacement, pairs);
-  apply_mortar_weights(slave_surface.current_positions(displacement),
-                       master_surface.current_positions(displacement),
-                       pairs);
+  // The mortar rows first: the projection is needed only where they are not defined.
+  std::vector<bool> projected = apply_mortar_weights(slave_surface.current_positions(displacement),
+                                                     master_surface.current_positions(displacement),
+                                                     pairs);
+  projected.flip();
+  point_projection.update_master_points(displacement, pairs, projected);
 }
 
 template <int dim>

@@ -191,15 +191,25 @@ template <int dim>
 void NodeToSegmentContact<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
                                                      std::vector<ContactPair<dim>>& pairs) const
 {
+  update_master_points(displacement, pairs, std::vector<bool>(pairs.size(), true));
+}
+
+template <int dim>
+void NodeToSegmentContact<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
+                                                     std::vector<ContactPair<dim>>& pairs,
+                                                     const std::vector<bool>& selected) const
+{
+  AssertDimension(selected.size(), pairs.size());
   const auto master_positions = master_surface.current_positions(displacement);
   for (unsigned int k = 0; k < pairs.size(); ++k)
-    move_master_point<dim>(master_surface,
-                           candidate_faces_of_pair[k],
-                           master_positions,
-                           displacement.current_position(pairs[k].slave),
-                           pairs[k].normal,
-                           nullptr,
-                           pairs[k]);
+    if (selected[k])
+      move_master_point<dim>(master_surface,
+                             candidate_faces_of_pair[k],
+                             master_positions,
+                             displacement.current_position(pairs[k].slave),
+                             pairs[k].normal,
+                             nullptr,
+                             pairs[k]);
 }
 
 template <int dim>

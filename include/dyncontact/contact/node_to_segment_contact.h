@@ -93,6 +93,11 @@ public:
   void update_master_points(const BorderDisplacement<dim>& displacement,
                             std::vector<ContactPair<dim>>& pairs) const override;
 
+  /** update_master_points() of the pairs k with `selected[k]` (one flag per pair) only. */
+  void update_master_points(const BorderDisplacement<dim>& displacement,
+                            std::vector<ContactPair<dim>>& pairs,
+                            const std::vector<bool>& selected) const;
+
   /** The slave node and every node of the pair's candidate faces. */
   std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
 
