@@ -98,8 +98,7 @@ MortarContact<dim>::MortarContact(const ContactSurface<dim>& slave_surface,
                        penalty_stiffness_per_area,
                        search_radius,
                        touching_tolerance),
-      slave_surface(slave_surface), master_surface(master_surface), kinematics(kinematics),
-      master_faces_of_slave_face(slave_surface.face_nodes().size()),
+      kinematics(kinematics), master_faces_of_slave_face(slave_surface.face_nodes().size()),
       candidate_pairs(point_projection.pairs())
 {
   std::vector<std::vector<unsigned int>> faces_of_node(slave_surface.nodes().size());
@@ -138,12 +137,12 @@ void MortarContact<dim>::integrate_face(const unsigned int face,
                                         const std::vector<Point<dim>>& master_positions,
                                         std::vector<MortarRow>& rows) const
 {
-  const std::vector<unsigned int>& nodes = slave_surface.face_nodes()[face];
+  const std::vector<unsigned int>& nodes = slave_surface().face_nodes()[face];
   const QuadraticFace<dim> slave_face    = quadratic_face(nodes, slave_positions);
   std::array<Tensor<1, dim>, 3> normals;
   for (unsigned int a = 0; a < 3; ++a)
     normals[a] = slave_normals[nodes[a]];
-  const types::material_id body = slave_surface.nodes()[nodes[0]].body;
+  const types::material_id body = slave_surface().nodes()[nodes[0]].body;
   const auto measure            = [&](const double xi)
   { return slave_face.tangent(xi).norm() * kinematics.measure_factor(slave_face.point(xi), body); };
   const QGauss<1> rule(gauss_points);
@@ -173,7 +172,8 @@ void MortarContact<dim>::integrate_face(const unsigned int face,
   std::vector<double> cuts = {0., 1.};
   for (const unsigned int master : master_faces_of_slave_face[face])
   {
-    const auto master_face = quadratic_face(master_surface.face_nodes()[master], master_positions);
+    const auto master_face =
+        quadratic_face(master_surface().face_nodes()[master], master_positions);
     const Overlap overlap{master,
                           slave_parameter(slave_face, normals, master_face.points[0]),
                           slave_parameter(slave_face, normals, master_face.points[1])};
@@ -204,7 +204,7 @@ void MortarContact<dim>::integrate_face(const unsigned int face,
         if (xi < overlap.lowest() || xi > overlap.highest())
           continue;
         const auto master_face =
-            quadratic_face(master_surface.face_nodes()[overlap.master_face], master_positions);
+            quadratic_face(master_surface().face_nodes()[overlap.master_face], master_positions);
         const double guess = (xi - overlap.xi_at_start) / (overlap.xi_at_end - overlap.xi_at_start);
         const auto eta     = master_face.ray_point(
             slave_point, direction, along_slave_normal, std::clamp(guess, 0., 1.));
@@ -230,7 +230,7 @@ void MortarContact<dim>::integrate_face(const unsigned int face,
         MortarRow& row = rows[nodes[a]];
         row.covered_area += psi * dA;
         for (unsigned int m = 0; m < 3; ++m)
-          row.master_integrals[master_surface.face_nodes()[hit->first][m]] +=
+          row.master_integrals[master_surface().face_nodes()[hit->first][m]] +=
               psi * N_master[m] * dA;
       }
     }
@@ -242,8 +242,8 @@ std::vector<typename MortarContact<dim>::MortarRow>
 MortarContact<dim>::mortar_rows(const std::vector<Point<dim>>& slave_positions,
                                 const std::vector<Point<dim>>& master_positions) const
 {
-  const auto slave_normals = slave_surface.normals(slave_positions);
-  std::vector<MortarRow> rows(slave_surface.nodes().size());
+  const auto slave_normals = slave_surface().normals(slave_positions);
+  std::vector<MortarRow> rows(slave_surface().nodes().size());
   for (unsigned int face = 0; face < master_faces_of_slave_face.size(); ++face)
     if (!master_faces_of_slave_face[face].empty())
       integrate_face(face, slave_positions, slave_normals, master_positions, rows);
@@ -257,7 +257,7 @@ MortarContact<dim>::apply_mortar_weights(const std::vector<Point<dim>>& slave_po
                                          std::vector<ContactPair<dim>>& pairs) const
 {
   const std::vector<MortarRow> rows = mortar_rows(slave_positions, master_positions);
-  const std::vector<double> lumped  = slave_surface.lumped_areas(slave_positions);
+  const std::vector<double> lumped  = slave_surface().lumped_areas(slave_positions);
   std::vector<bool> mortar(pairs.size(), false);
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
@@ -272,7 +272,7 @@ MortarContact<dim>::apply_mortar_weights(const std::vector<Point<dim>>& slave_po
       continue;
     pairs[k].masters.clear();
     for (const auto& [master, integral] : row.master_integrals)
-      pairs[k].masters.push_back({master_surface.nodes()[master], integral / row.covered_area});
+      pairs[k].masters.push_back({master_surface().nodes()[master], integral / row.covered_area});
     mortar[k] = true;
   }
   return mortar;
@@ -283,8 +283,8 @@ void MortarContact<dim>::update_pairs(const BorderDisplacement<dim>& displacemen
                                       std::vector<ContactPair<dim>>& pairs) const
 {
   point_projection.update_pairs(displacement, pairs);
-  apply_mortar_weights(slave_surface.current_positions(displacement),
-                       master_surface.current_positions(displacement),
+  apply_mortar_weights(slave_surface().current_positions(displacement),
+                       master_surface().current_positions(displacement),
                        pairs);
 }
 
@@ -293,9 +293,10 @@ void MortarContact<dim>::update_master_points(const BorderDisplacement<dim>& dis
                                               std::vector<ContactPair<dim>>& pairs) const
 {
   // The mortar rows first: the projection is needed only where they are not defined.
-  std::vector<bool> projected = apply_mortar_weights(slave_surface.current_positions(displacement),
-                                                     master_surface.current_positions(displacement),
-                                                     pairs);
+  std::vector<bool> projected =
+      apply_mortar_weights(slave_surface().current_positions(displacement),
+                           master_surface().current_positions(displacement),
+                           pairs);
   projected.flip();
   point_projection.update_master_points(displacement, pairs, projected);
 }
@@ -305,12 +306,12 @@ std::vector<Node<dim>> MortarContact<dim>::coupled_nodes(const unsigned int k) c
 {
   std::vector<Node<dim>> nodes  = point_projection.coupled_nodes(k);
   const unsigned int slave_node = point_projection.slave_node(k);
-  const auto& slave_faces       = slave_surface.face_nodes();
+  const auto& slave_faces       = slave_surface().face_nodes();
   for (unsigned int face = 0; face < slave_faces.size(); ++face)
     if (std::count(slave_faces[face].begin(), slave_faces[face].end(), slave_node) > 0)
       for (const unsigned int master : master_faces_of_slave_face[face])
-        for (const unsigned int node : master_surface.face_nodes()[master])
-          nodes.push_back(master_surface.nodes()[node]);
+        for (const unsigned int node : master_surface().face_nodes()[master])
+          nodes.push_back(master_surface().nodes()[node]);
   return nodes;
 }
 

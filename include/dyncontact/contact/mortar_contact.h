@@ -108,11 +108,14 @@ private:
   };
 
   NodeToSegmentContact<dim> point_projection;
-  ContactSurface<dim> slave_surface, master_surface;
   const Kinematics<dim>& kinematics;
   /** Per slave face: the master faces it is integrated against (its nodes' candidate faces). */
   std::vector<std::vector<unsigned int>> master_faces_of_slave_face;
   std::vector<ContactPair<dim>> candidate_pairs;
+
+  /** The surfaces, node-to-segment contact's (one copy). */
+  const ContactSurface<dim>& slave_surface() const { return point_projection.slave(); }
+  const ContactSurface<dim>& master_surface() const { return point_projection.master(); }
 
   /** Every slave node's row, the surfaces' nodes at the given positions. */
   std::vector<MortarRow> mortar_rows(const std::vector<Point<dim>>& slave_positions,

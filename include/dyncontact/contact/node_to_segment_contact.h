@@ -108,6 +108,12 @@ public:
   std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
                                         const std::vector<double>& multipliers) const override;
 
+  /** The slave surface (body A's). */
+  const ContactSurface<dim>& slave() const { return slave_surface; }
+
+  /** The master surface (body B's). */
+  const ContactSurface<dim>& master() const { return master_surface; }
+
   /** The index in the slave surface's nodes() of pair `k`'s slave node. */
   unsigned int slave_node(const unsigned int k) const { return slave_node_of_pair[k]; }
 
