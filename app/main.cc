@@ -154,6 +154,8 @@ void run(const dyncontact::CommandLine& command_line, const std::vector<std::str
   print_warnings(parameters);
   if (parameters.problem.geometry == GeometryKind::bars)
     simulate<1>(reader, std::make_unique<BarModel>(parameters.geometry), command_line, arguments);
+  else if (parameters.problem.geometry == GeometryKind::solid_mesh)
+    simulate<3>(reader, create_solid_mesh_model(parameters), command_line, arguments);
   else
     simulate<2>(reader, create_mesh_model(parameters), command_line, arguments);
 }

@@ -52,11 +52,13 @@ void ContactPairParameters::declare_parameters(ParameterHandler& prm)
                     Patterns::Anything(),
                     "With master boundary = 0: a fixed rigid plane (a line in the r-z plane) as "
                     "'r, z; n_r, n_z': a point on it [length] and its normal pointing toward the "
-                    "body (normalized here), e.g. '0, 0; 0, 1' for the plane z = 0 below a body. "
-                    "Empty otherwise.");
+                    "body (normalized here), e.g. '0, 0; 0, 1' for the plane z = 0 below a body; "
+                    "in 3D 'x, y, z; n_x, n_y, n_z', e.g. '0, 0, 0; 0, 0, 1'. Empty otherwise.");
 }
 
-void ContactPairParameters::parse_parameters(ParameterHandler& prm, const std::string& source)
+void ContactPairParameters::parse_parameters(ParameterHandler& prm,
+                                             const std::string& source,
+                                             const unsigned int dim)
 {
   this->source           = source;
   const auto slave       = prm.get_integer("slave boundary");
@@ -88,12 +90,17 @@ void ContactPairParameters::parse_parameters(ParameterHandler& prm, const std::s
   const std::vector<double> normal = separator == std::string::npos
                                          ? std::vector<double>()
                                          : parse_numbers(text.substr(separator + 1));
-  const double length              = normal.size() == 2 ? std::hypot(normal[0], normal[1]) : 0.;
-  if (point.size() != 2 || normal.size() != 2 || !(length > 0.))
-    throw InputError(source + "/rigid plane = '" + text +
-                     "' is not allowed: it must be 'r, z; n_r, n_z', a point and a nonzero "
-                     "normal.");
-  rigid_plane = RigidPlane{point, {normal[0] / length, normal[1] / length}};
+  double length                    = 0.;
+  for (const double component : normal)
+    length += component * component;
+  length = std::sqrt(length);
+  if (point.size() != dim || normal.size() != dim || !(length > 0.))
+    throw InputError(source + "/rigid plane = '" + text + "' is not allowed: it must be " +
+                     (dim == 3 ? "'x, y, z; n_x, n_y, n_z'" : "'r, z; n_r, n_z'") +
+                     ", a point and a nonzero normal.");
+  rigid_plane = RigidPlane{point, normal};
+  for (double& component : rigid_plane->normal)
+    component /= length;
 }
 
 void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_pairs)
@@ -156,7 +163,7 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
   prm.leave_subsection();
 }
 
-void ContactParameters::parse_parameters(ParameterHandler& prm)
+void ContactParameters::parse_parameters(ParameterHandler& prm, const unsigned int dim)
 {
   prm.enter_subsection("Contact");
   formulation = contact_formulation_names().parse(prm.get("formulation"), "Contact/formulation");
@@ -178,7 +185,7 @@ void ContactParameters::parse_parameters(ParameterHandler& prm)
                                "Pair",
                                pairs.size(),
                                [&](const unsigned int k, const std::string& name)
-                               { pairs[k].parse_parameters(prm, "Contact/" + name); });
+                               { pairs[k].parse_parameters(prm, "Contact/" + name, dim); });
   prm.leave_subsection();
 }
 } // namespace dyncontact

@@ -25,9 +25,9 @@ void SymmetryParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry("boundary",
                     "0",
                     Patterns::Integer(0, 1000),
-                    "Boundary id (gmsh physical curve tag, >= 1) of a straight boundary whose "
-                    "normal, along x (r) or y (z), is a symmetry plane: its normal displacement "
-                    "is held at zero.");
+                    "Boundary id (gmsh physical curve tag, >= 1; in 3D the physical surface tag) "
+                    "of a straight boundary (in 3D a plane) whose normal, along x (r), y (z) or, "
+                    "in 3D, z, is a symmetry plane: its normal displacement is held at zero.");
 }
 
 void SymmetryParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
@@ -40,20 +40,27 @@ void SupportParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry("boundary",
                     "0",
                     Patterns::Integer(0, 1000),
-                    "Boundary id (gmsh physical curve tag, >= 1) of the supported boundary.");
+                    "Boundary id (gmsh physical curve tag, >= 1; in 3D the physical surface tag) "
+                    "of the supported boundary.");
   prm.declare_entry("components",
                     "x, y",
-                    Patterns::List(Patterns::Selection("x|y"), 1, 2),
-                    "The displacement components held at zero on it: x (r), y (z), or both "
-                    "(a clamp).");
+                    Patterns::List(Patterns::Selection("x|y|z"), 1, 3),
+                    "The displacement components held at zero on it: x (r), y (z), z (3D only), "
+                    "or several (x, y in 2D or x, y, z in 3D: a clamp).");
 }
 
-void SupportParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+void SupportParameters::parse_parameters(ParameterHandler& prm,
+                                         const std::string& section,
+                                         const unsigned int dim)
 {
   boundary = get_boundary(prm, section);
   components.clear();
   for (const std::string& name : Utilities::split_string_list(prm.get("components")))
-    components.push_back(name == "x" ? 0 : 1);
+    components.push_back(name == "x" ? 0 : name == "y" ? 1 : 2);
+  if (*std::max_element(components.begin(), components.end()) >= dim)
+    throw InputError(section + "/components = " + prm.get("components") +
+                     " is not allowed in 2D: z exists only for Problem/geometry = 3d mesh (give "
+                     "x, y or both).");
   std::sort(components.begin(), components.end());
   components.erase(std::unique(components.begin(), components.end()), components.end());
 }
@@ -84,7 +91,7 @@ void BoundaryParameters::declare_parameters(ParameterHandler& prm,
   prm.leave_subsection();
 }
 
-void BoundaryParameters::parse_parameters(ParameterHandler& prm)
+void BoundaryParameters::parse_parameters(ParameterHandler& prm, const unsigned int dim)
 {
   prm.enter_subsection("Boundary");
   symmetry_planes.resize(prm.get_integer("number of symmetry planes"));
@@ -98,7 +105,7 @@ void BoundaryParameters::parse_parameters(ParameterHandler& prm)
                                "Support",
                                supports.size(),
                                [&](const unsigned int k, const std::string& name)
-                               { supports[k].parse_parameters(prm, "Boundary/" + name); });
+                               { supports[k].parse_parameters(prm, "Boundary/" + name, dim); });
   prm.leave_subsection();
 }
 } // namespace dyncontact

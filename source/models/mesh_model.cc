@@ -1,3 +1,4 @@
+#include <dyncontact/models/body_materials.h>
 #include <dyncontact/models/mesh_model.h>
 #include <dyncontact/reference/impact_measures.h>
 
@@ -115,22 +116,9 @@ double MeshModel::touching_tolerance() const
                   8. * std::numeric_limits<double>::epsilon() * largest_coordinate);
 }
 
-double MeshModel::dilatational_wave_speed(const unsigned int body) const
-{
-  const BodyParameters& parameters = bodies.bodies[body];
-  const double nu                  = parameters.poissons_ratio;
-  const double constrained_modulus =
-      parameters.youngs_modulus * (1. - nu) / ((1. + nu) * (1. - 2. * nu));
-  return std::sqrt(constrained_modulus / parameters.density);
-}
-
 std::vector<BodyMaterial> MeshModel::body_materials() const
 {
-  std::vector<BodyMaterial> materials;
-  for (const auto& body : bodies.bodies)
-    materials.push_back(
-        {create_material(body.material, body.youngs_modulus, body.poissons_ratio), body.density});
-  return materials;
+  return dyncontact::body_materials(bodies);
 }
 
 std::unique_ptr<Kinematics<2>> MeshModel::create_kinematics() const
@@ -600,7 +588,7 @@ void MeshModel::print_summary(std::ostream& out, const double time_step) const
     const BodyParameters& parameters = bodies.bodies[body];
     out << "  body " << body + 1 << ": " << parameters.material
         << ", E = " << parameters.youngs_modulus << ", nu = " << parameters.poissons_ratio
-        << ", rho = " << parameters.density << ", c_p = " << dilatational_wave_speed(body);
+        << ", rho = " << parameters.density << ", c_p = " << dilatational_wave_speed(parameters);
     if (const std::optional<SphereGeometry> sphere = geometry.sphere(body))
     {
       if (section == MeshSection::axisymmetric)
@@ -613,7 +601,7 @@ void MeshModel::print_summary(std::ostream& out, const double time_step) const
   }
   double speed = 0.;
   for (unsigned int body = 0; body < n_bodies(); ++body)
-    speed = std::max(speed, dilatational_wave_speed(body));
+    speed = std::max(speed, dilatational_wave_speed(bodies.bodies[body]));
   out << "  Courant number c_p dt / h_min = " << speed * time_step / shortest_edge << "\n";
   if (const auto hertz = hertz_reference())
     out << "  reference: Hertz's head-on impact (hertz.csv, impact_summary.csv): R* = "

@@ -33,14 +33,26 @@ private:
   std::streambuf* original;
 };
 
+/** Evaluates each component of `function` once, at the origin and t = 0 (see parse_function()). */
+template <int dim>
+void evaluate_once(const FunctionExpression& function)
+{
+  const auto parsed = function.create<dim>(dim);
+  const CapturedErrorStream quiet;
+  for (unsigned int component = 0; component < parsed->n_components; ++component)
+    parsed->value(Point<dim>(), component);
+}
+
 /**
- * Reads the 2-component ParsedFunction in subsection `name` and evaluates each component once, at
- * the origin and t = 0: muParser compiles an expression only when it is first evaluated, so an
+ * Reads the `dim`-component ParsedFunction in subsection `name` and evaluates each component once,
+ * at the origin and t = 0: muParser compiles an expression only when it is first evaluated, so an
  * unknown function or a syntax error shows here and not in the middle of a run. Any problem
  * becomes an InputError naming the entry and the expression.
  */
-FunctionExpression
-parse_function(ParameterHandler& prm, const std::string& name, const std::string& section)
+FunctionExpression parse_function(ParameterHandler& prm,
+                                  const std::string& name,
+                                  const std::string& section,
+                                  const unsigned int dim)
 {
   prm.enter_subsection(name);
   const FunctionExpression function{
@@ -48,10 +60,10 @@ parse_function(ParameterHandler& prm, const std::string& name, const std::string
   prm.leave_subsection();
   try
   {
-    const auto parsed = function.create<2>(2);
-    const CapturedErrorStream quiet;
-    for (unsigned int component = 0; component < parsed->n_components; ++component)
-      parsed->value(Point<2>(), component);
+    if (dim == 3)
+      evaluate_once<3>(function);
+    else
+      evaluate_once<2>(function);
   }
   catch (const ExceptionBase& exception)
   {
@@ -59,10 +71,23 @@ parse_function(ParameterHandler& prm, const std::string& name, const std::string
         section + "/" + name + "/Function expression = '" + function.expression + "'" +
         (function.constants.empty() ? "" : " (constants '" + function.constants + "')") + ": " +
         exception_text(exception) +
-        "; it must give 2 components '(x-component); (y-component)' of x = r, y = z "
-        "and t in muParser syntax.");
+        (dim == 3 ? "; it must give 3 components '(x-component); (y-component); "
+                    "(z-component)' of x, y, z and t in muParser syntax."
+                  : "; it must give 2 components '(x-component); (y-component)' of "
+                    "x = r, y = z and t in muParser syntax."));
   }
   return function;
+}
+
+/** Declares a `dim`-component ParsedFunction of x, y (, z) and t in subsection `name`. */
+void declare_function(ParameterHandler& prm, const std::string& name, const unsigned int dim)
+{
+  prm.enter_subsection(name);
+  if (dim == 3)
+    Functions::ParsedFunction<3>::declare_parameters(prm, 3);
+  else
+    Functions::ParsedFunction<2>::declare_parameters(prm, 2);
+  prm.leave_subsection();
 }
 } // namespace
 
@@ -133,7 +158,7 @@ void MeshParameters::parse_parameters(ParameterHandler& prm,
     }
 }
 
-void BodyParameters::declare_parameters(ParameterHandler& prm)
+void BodyParameters::declare_parameters(ParameterHandler& prm, const unsigned int dim)
 {
   prm.declare_entry("material",
                     "linear elastic",
@@ -148,24 +173,23 @@ void BodyParameters::declare_parameters(ParameterHandler& prm)
       "monitor point",
       "",
       Patterns::Anything(),
-      "(r, z), or (x, y) in plane strain, [length] of the point whose nearest node of "
-      "this body is reported in the history as u_tip_<b>, v_tip_<b>, a_tip_<b> (z or y "
-      "components); it must lie in the body or within one cell of it. Empty: the body's "
-      "centroid, (0, z_c) on the axis (the centre of a sphere), or (x_c, y_c).");
-  prm.enter_subsection("Initial velocity");
-  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
-  prm.leave_subsection();
-  // Documented in the README: (T_r; T_z) of x = r, y = z, t, force per unit reference area.
-  prm.enter_subsection("Surface traction");
-  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
-  prm.leave_subsection();
-  // Documented in the README: (b_r; b_z) of x = r, y = z, t, force per unit reference volume.
-  prm.enter_subsection("Body force");
-  Functions::ParsedFunction<2>::declare_parameters(prm, 2);
-  prm.leave_subsection();
+      "(r, z), or (x, y) in plane strain, or (x, y, z) in 3D, [length] of the point whose "
+      "nearest node of this body is reported in the history as u_tip_<b>, v_tip_<b>, a_tip_<b> "
+      "(components along the impact direction: z, y, or z in 3D); it must lie in the body or "
+      "within one cell of it. Empty: the body's centroid, (0, z_c) on the axis (the centre of a "
+      "sphere), or (x_c, y_c) or (x_c, y_c, z_c).");
+  // Documented in the README: (v_r; v_z) [length/time], or (v_x; v_y; v_z) in 3D, of x (= r),
+  // y (= z), z and t.
+  declare_function(prm, "Initial velocity", dim);
+  // Documented in the README: force per unit reference area.
+  declare_function(prm, "Surface traction", dim);
+  // Documented in the README: force per unit reference volume.
+  declare_function(prm, "Body force", dim);
 }
 
-void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& section)
+void BodyParameters::parse_parameters(ParameterHandler& prm,
+                                      const std::string& section,
+                                      const unsigned int dim)
 {
   material       = prm.get("material");
   youngs_modulus = get_positive(prm, "Young's modulus", section);
@@ -179,19 +203,25 @@ void BodyParameters::parse_parameters(ParameterHandler& prm, const std::string& 
   if (!point_text.empty())
   {
     const std::vector<std::string> point = Utilities::split_string_list(point_text);
-    if (point.size() != 2 || !Patterns::Double().match(point[0]) ||
-        !Patterns::Double().match(point[1]))
-      throw InputError(section + "/monitor point = '" + point_text +
-                       "' is not a point: give r, z (two numbers), or leave it empty for the "
-                       "body's centroid.");
-    monitor_point = {Utilities::string_to_double(point[0]), Utilities::string_to_double(point[1])};
+    const bool numbers =
+        std::all_of(point.begin(),
+                    point.end(),
+                    [](const std::string& number) { return Patterns::Double().match(number); });
+    if (point.size() != dim || !numbers)
+      throw InputError(section + "/monitor point = '" + point_text + "' is not a point: give " +
+                       (dim == 3 ? "x, y, z (three numbers)" : "r, z (two numbers)") +
+                       ", or leave it empty for the body's centroid.");
+    for (const std::string& number : point)
+      monitor_point.push_back(Utilities::string_to_double(number));
   }
-  initial_velocity = parse_function(prm, "Initial velocity", section);
-  surface_traction = parse_function(prm, "Surface traction", section);
-  body_force       = parse_function(prm, "Body force", section);
+  initial_velocity = parse_function(prm, "Initial velocity", section, dim);
+  surface_traction = parse_function(prm, "Surface traction", section, dim);
+  body_force       = parse_function(prm, "Body force", section, dim);
 }
 
-void BodiesParameters::declare_parameters(ParameterHandler& prm, const unsigned int n_bodies)
+void BodiesParameters::declare_parameters(ParameterHandler& prm,
+                                          const unsigned int n_bodies,
+                                          const unsigned int dim)
 {
   prm.enter_subsection("Bodies");
   prm.declare_entry("number of bodies",
@@ -202,12 +232,12 @@ void BodiesParameters::declare_parameters(ParameterHandler& prm, const unsigned 
   for_each_numbered_subsection(prm,
                                "Body",
                                n_bodies,
-                               [&prm](unsigned int, const std::string&)
-                               { BodyParameters::declare_parameters(prm); });
+                               [&prm, dim](unsigned int, const std::string&)
+                               { BodyParameters::declare_parameters(prm, dim); });
   prm.leave_subsection();
 }
 
-void BodiesParameters::parse_parameters(ParameterHandler& prm)
+void BodiesParameters::parse_parameters(ParameterHandler& prm, const unsigned int dim)
 {
   prm.enter_subsection("Bodies");
   bodies.resize(prm.get_integer("number of bodies"));
@@ -215,7 +245,7 @@ void BodiesParameters::parse_parameters(ParameterHandler& prm)
                                "Body",
                                bodies.size(),
                                [&](const unsigned int body, const std::string& name)
-                               { bodies[body].parse_parameters(prm, "Bodies/" + name); });
+                               { bodies[body].parse_parameters(prm, "Bodies/" + name, dim); });
   prm.leave_subsection();
 }
 bool FunctionExpression::is_zero() const

@@ -90,7 +90,7 @@ std::string readable_entry_error(const std::string& message, const std::string& 
     const std::string why =
         name == "Geometry" ? "it is for Problem/geometry = bars"
         : name == "Mesh" || name == "Bodies" || name == "Boundary"
-            ? "it is for Problem/geometry = axisymmetric mesh or plane strain mesh"
+            ? "it is for Problem/geometry = axisymmetric mesh, plane strain mesh or 3d mesh"
         : name.rfind("Bar ", 0) == 0  ? "there are only Geometry/number of bars bars"
         : name.rfind("Body ", 0) == 0 ? "there are only Bodies/number of bodies bodies"
         : name.rfind("Pair ", 0) == 0 ? "there are only Contact/number of pairs pairs"
@@ -215,7 +215,8 @@ void declare_all(ParameterHandler& prm, const std::optional<ProblemSize>& size)
   if (!size || size->geometry != GeometryKind::bars)
   {
     MeshParameters::declare_parameters(prm);
-    BodiesParameters::declare_parameters(prm, size ? size->n_bodies : 1);
+    BodiesParameters::declare_parameters(
+        prm, size ? size->n_bodies : 1, size ? space_dimension(size->geometry) : 2);
     BoundaryParameters::declare_parameters(
         prm, size ? size->n_symmetry_planes : 1, size ? size->n_supports : 1);
   }
@@ -330,7 +331,8 @@ ParameterReader::ParameterReader(const std::string& filename,
     }
     run_parameters.problem.parse_parameters(prm);
     run_parameters.time.parse_parameters(prm);
-    run_parameters.contact.parse_parameters(prm);
+    const unsigned int dim = space_dimension(size.geometry);
+    run_parameters.contact.parse_parameters(prm, dim);
     run_parameters.newton.parse_parameters(prm);
     run_parameters.guards.parse_parameters(prm);
     if (size.geometry == GeometryKind::bars)
@@ -339,8 +341,8 @@ ParameterReader::ParameterReader(const std::string& filename,
     {
       run_parameters.mesh.parse_parameters(prm,
                                            std::filesystem::path(filename).parent_path().string());
-      run_parameters.bodies.parse_parameters(prm);
-      run_parameters.boundary.parse_parameters(prm);
+      run_parameters.bodies.parse_parameters(prm, dim);
+      run_parameters.boundary.parse_parameters(prm, dim);
     }
     run_parameters.output.parse_parameters(prm);
   }

@@ -30,9 +30,9 @@ void check_run_setup(const RunParameters& parameters, std::ostream& log)
       model->exact_solution(parameters.time.n_steps() * parameters.time.time_step);
     prepare<1>(parameters, std::move(model), log);
   }
+  else if (parameters.problem.geometry == GeometryKind::solid_mesh)
+    prepare<3>(parameters, create_solid_mesh_model(parameters), log);
   else
-  {
     prepare<2>(parameters, create_mesh_model(parameters), log);
-  }
 }
 } // namespace dyncontact

@@ -109,6 +109,22 @@ MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string
   return run;
 }
 
+std::vector<std::string> with(std::vector<std::string> overrides,
+                              const std::vector<std::string>& more)
+{
+  overrides.insert(overrides.end(), more.begin(), more.end());
+  return overrides;
+}
+
+SolidRun run_solid_case(const std::string& prm_file, const std::vector<std::string>& overrides)
+{
+  SolidRun run;
+  run.parameters = test_parameters(prm_file, overrides);
+  run.simulation =
+      run_quietly<3>(run.parameters, create_solid_mesh_model(run.parameters), run.files);
+  return run;
+}
+
 std::vector<unsigned int> contact_samples(const BarRun& run)
 {
   const auto intervals   = run.exact->contact_intervals(0);
@@ -200,7 +216,9 @@ std::vector<PressureRow> pressure_rows(const std::string& text)
   std::istringstream lines(text);
   std::string line;
   std::getline(lines, line);
-  EXPECT_EQ(line, "x,y,gap,multiplier,pressure,active");
+  const bool solid = line == "x,y,z,gap,multiplier,pressure,active";
+  EXPECT_TRUE(solid || line == "x,y,gap,multiplier,pressure,active") << line;
+  const std::size_t n_fields = solid ? 7 : 6;
   std::vector<PressureRow> rows;
   while (std::getline(lines, line))
   {
@@ -208,9 +226,11 @@ std::vector<PressureRow> pressure_rows(const std::string& text)
     std::istringstream values(line);
     for (std::string value; std::getline(values, value, ',');)
       fields.push_back(std::stod(value));
-    EXPECT_EQ(fields.size(), 6u) << line;
-    if (fields.size() == 6)
-      rows.push_back({fields[0], fields[3], fields[4], fields[5] == 1.});
+    EXPECT_EQ(fields.size(), n_fields) << line;
+    if (fields.size() != n_fields)
+      continue;
+    const double* const tail = fields.data() + n_fields - 4; // gap, multiplier, pressure, active
+    rows.push_back({fields[0], fields[1], solid ? fields[2] : 0., tail[1], tail[2], tail[3] == 1.});
   }
   return rows;
 }

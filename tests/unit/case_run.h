@@ -35,11 +35,12 @@ struct BarRun
   double exact_contact_force(double t) const;
 };
 
-/** A finished run of an axisymmetric mesh problem. */
-struct MeshRun
+/** A finished run of a mesh problem: 2D (axisymmetric or plane strain) or 3D. */
+template <int dim>
+struct CaseRun
 {
   RunParameters parameters;
-  std::unique_ptr<Simulation<2>> simulation;
+  std::unique_ptr<Simulation<dim>> simulation;
   /**
    * The text of every profile_t<T>.csv, contact_pressure_t<T>.csv and *_summary.csv the run
    * wrote, by name.
@@ -48,6 +49,11 @@ struct MeshRun
 
   const History& history() const { return simulation->history(); }
 };
+
+/** A finished run of a 2D mesh problem. */
+using MeshRun = CaseRun<2>;
+/** A finished run of a 3D mesh problem (Problem/geometry = 3d mesh). */
+using SolidRun = CaseRun<3>;
 
 /**
  * Runs `prm_file` (relative to the source tree) with the overrides applied after the file, in a
@@ -61,6 +67,14 @@ BarRun run_bar_case(const std::string& prm_file, const std::vector<std::string>&
  * its summary are kept in memory, see MeshRun::files.
  */
 MeshRun run_mesh_case(const std::string& prm_file, const std::vector<std::string>& overrides = {});
+
+/** `more` after `overrides`. */
+std::vector<std::string> with(std::vector<std::string> overrides,
+                              const std::vector<std::string>& more);
+
+/** The same for a 3D mesh problem. */
+SolidRun run_solid_case(const std::string& prm_file,
+                        const std::vector<std::string>& overrides = {});
 
 /**
  * The overrides that put prm/spheres_rho0.001.prm (graded mesh, node-to-segment, modified Newton)
@@ -86,15 +100,15 @@ std::vector<unsigned int> contact_samples(const BarRun& run);
  */
 double largest_relative_difference(const History& history, const History& reference);
 
-/** One row of contact_pressure_t<T>.csv: the slave node's current x (r), its nodal force
- * (multiplier) and contact pressure, active or not. */
+/** One row of contact_pressure_t<T>.csv: the slave node's current x (r), y and z (0 in 2D), its
+ * nodal force (multiplier) and contact pressure, active or not. */
 struct PressureRow
 {
-  double x, multiplier, pressure;
+  double x, y, z, multiplier, pressure;
   bool active;
 };
 
-/** The rows of the text of a contact_pressure_t<T>.csv file (columns x, y, gap, multiplier,
+/** The rows of the text of a contact_pressure_t<T>.csv file (columns x, y, (z,) gap, multiplier,
  * pressure, active). */
 std::vector<PressureRow> pressure_rows(const std::string& text);
 

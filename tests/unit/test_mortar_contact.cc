@@ -64,14 +64,6 @@ const std::vector<std::string> plane_strain = {"Problem/geometry=plane strain me
                                                "Boundary/number of symmetry planes=2",
                                                "Boundary/Symmetry 1/boundary=1",
                                                "Boundary/Symmetry 2/boundary=8"};
-
-/** `more` after `overrides`. */
-std::vector<std::string> with(std::vector<std::string> overrides,
-                              const std::vector<std::string>& more)
-{
-  overrides.insert(overrides.end(), more.begin(), more.end());
-  return overrides;
-}
 } // namespace
 
 // Plane strain: both blocks widen by nu (1 + nu) / E = 2.4e-4. Mortar gives the uniform pressure

@@ -47,8 +47,8 @@ struct ContactPairParameters
 
   static void declare_parameters(ParameterHandler& prm);
   /** Throws InputError (naming `source`) for ids below 2, equal ids, or not exactly one of
-   * master boundary and rigid plane, or a malformed plane. */
-  void parse_parameters(ParameterHandler& prm, const std::string& source);
+   * master boundary and rigid plane, or a malformed plane (not `dim` coordinates each). */
+  void parse_parameters(ParameterHandler& prm, const std::string& source, unsigned int dim);
 };
 
 /** Contact enforcement. Subsection `Contact`. */
@@ -73,6 +73,7 @@ struct ContactParameters
 
   /** Declares the subsections Pair 1 to Pair n_pairs too. */
   static void declare_parameters(ParameterHandler& prm, unsigned int n_pairs);
-  void parse_parameters(ParameterHandler& prm);
+  /** Reads the entries; `dim` is the space dimension the rigid planes are given in (1 to 3). */
+  void parse_parameters(ParameterHandler& prm, unsigned int dim);
 };
 } // namespace dyncontact

@@ -16,7 +16,7 @@ namespace dyncontact
  */
 struct SymmetryParameters
 {
-  types::boundary_id boundary; ///< the gmsh physical curve tag, >= 1
+  types::boundary_id boundary; ///< the gmsh physical curve (3D: surface) tag, >= 1
 
   static void declare_parameters(ParameterHandler& prm);
   /** `section` names the subsection in errors, e.g. "Boundary/Symmetry 1". */
@@ -30,11 +30,13 @@ struct SymmetryParameters
  */
 struct SupportParameters
 {
-  types::boundary_id boundary;          ///< the gmsh physical curve tag, >= 1
-  std::vector<unsigned int> components; ///< 0 = x (r), 1 = y (z); sorted, not empty
+  types::boundary_id boundary; ///< the gmsh physical curve (3D: surface) tag, >= 1
+  /// 0 = x (r), 1 = y (z), 2 = z (3D); sorted, not empty
+  std::vector<unsigned int> components;
 
   static void declare_parameters(ParameterHandler& prm);
-  void parse_parameters(ParameterHandler& prm, const std::string& section);
+  /** Throws InputError (naming `section`) for a component z when `dim` is 2. */
+  void parse_parameters(ParameterHandler& prm, const std::string& section, unsigned int dim);
 };
 
 /** The boundary conditions of a mesh problem besides contact and tractions. Subsection `Boundary`.
@@ -47,6 +49,7 @@ struct BoundaryParameters
   static void declare_parameters(ParameterHandler& prm,
                                  unsigned int n_symmetry_planes,
                                  unsigned int n_supports);
-  void parse_parameters(ParameterHandler& prm);
+  /** Reads the entries of a `dim`-dimensional mesh problem (2 or 3). */
+  void parse_parameters(ParameterHandler& prm, unsigned int dim);
 };
 } // namespace dyncontact

@@ -189,9 +189,6 @@ private:
    */
   double search_radius() const;
 
-  /** Dilatational wave speed sqrt((lambda + 2 mu) / rho) of body b. */
-  double dilatational_wave_speed(unsigned int body) const;
-
   MeshParameters mesh;
   BodiesParameters bodies;
   MeshSection section;

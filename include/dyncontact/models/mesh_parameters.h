@@ -52,19 +52,23 @@ struct BodyParameters
   double youngs_modulus;
   double poissons_ratio;
   double density;
-  /// the coordinates (r, z), or (x, y) in plane strain, of the point whose nearest node is
-  /// reported as u_tip_<b> etc.; empty: the body's centroid ((0, z_c) in axisymmetry)
+  /// the coordinates (r, z), or (x, y) in plane strain, or (x, y, z) in 3D, of the point whose
+  /// nearest node is reported as u_tip_<b> etc.; empty: the body's centroid ((0, z_c) in
+  /// axisymmetry)
   std::vector<double> monitor_point;
-  /// the initial velocity (v_r; v_z) [length/time] of x = r, y = z, t
+  /// the initial velocity (v_r; v_z) [length/time] of x = r, y = z, t; in 3D (v_x; v_y; v_z) of
+  /// x, y, z, t
   FunctionExpression initial_velocity;
-  /// the dead surface traction (T_r; T_z) [force/reference area] of x = r, y = z, t
+  /// the dead surface traction [force/reference area], components as the initial velocity's
   FunctionExpression surface_traction;
-  /// the dead body force (b_r; b_z) [force/reference volume] of x = r, y = z, t: rho g for
-  /// gravity g
+  /// the dead body force [force/reference volume], components as the initial velocity's: rho g
+  /// for gravity g
   FunctionExpression body_force;
 
-  static void declare_parameters(ParameterHandler& prm);
-  void parse_parameters(ParameterHandler& prm, const std::string& section);
+  /** Declares the entries of a body of a `dim`-dimensional mesh (2 or 3). */
+  static void declare_parameters(ParameterHandler& prm, unsigned int dim);
+  /** Reads them; errors (InputError) name `section`. */
+  void parse_parameters(ParameterHandler& prm, const std::string& section, unsigned int dim);
 };
 
 /** The bodies of a mesh-based problem, body b = material id b - 1. Subsection `Bodies`. */
@@ -72,7 +76,8 @@ struct BodiesParameters
 {
   std::vector<BodyParameters> bodies;
 
-  static void declare_parameters(ParameterHandler& prm, unsigned int n_bodies);
-  void parse_parameters(ParameterHandler& prm);
+  /** Declares the subsections Body 1 to Body n_bodies of a `dim`-dimensional mesh (2 or 3). */
+  static void declare_parameters(ParameterHandler& prm, unsigned int n_bodies, unsigned int dim);
+  void parse_parameters(ParameterHandler& prm, unsigned int dim);
 };
 } // namespace dyncontact

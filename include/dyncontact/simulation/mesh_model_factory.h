@@ -1,6 +1,7 @@
 #pragma once
 
 #include <dyncontact/models/mesh_model.h>
+#include <dyncontact/models/solid_mesh_model.h>
 #include <dyncontact/simulation/run_parameters.h>
 
 #include <memory>
@@ -13,4 +14,7 @@ namespace dyncontact
  * that the geometry is not bars.
  */
 std::unique_ptr<MeshModel> create_mesh_model(const RunParameters& parameters);
+
+/** The SolidMeshModel of a run with Problem/geometry = 3d mesh. */
+std::unique_ptr<SolidMeshModel> create_solid_mesh_model(const RunParameters& parameters);
 } // namespace dyncontact

@@ -25,14 +25,18 @@ enum class GeometryKind
 {
   bars,              ///< 1D bars built in code, subsection `Geometry`
   axisymmetric_mesh, ///< bodies of revolution from a gmsh mesh, subsections `Mesh` and `Bodies`
-  plane_strain_mesh  ///< plane-strain bodies from a gmsh mesh, subsections `Mesh` and `Bodies`
+  plane_strain_mesh, ///< plane-strain bodies from a gmsh mesh, subsections `Mesh` and `Bodies`
+  solid_mesh         ///< 3D bodies from a gmsh mesh of hexahedra, subsections `Mesh` and `Bodies`
 };
 
 /** The names of Problem/geometry. */
 const NameTable<GeometryKind>& geometry_names();
 
-/** The section of a mesh geometry (not bars: Assert). */
+/** The section of a 2D mesh geometry (not bars or a 3D mesh: Assert). */
 MeshSection mesh_section(GeometryKind geometry);
+
+/** The space dimension of the problems of `geometry`: 1 (bars), 2 (2D meshes) or 3. */
+unsigned int space_dimension(GeometryKind geometry);
 
 /** Subsection `Problem`. */
 struct ProblemParameters

@@ -1,0 +1,269 @@
+#include <dyncontact/models/body_materials.h>
+#include <dyncontact/models/solid_mesh_model.h>
+
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q.h>
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace dyncontact
+{
+namespace
+{
+/** "(x, y, z)" of a point, for messages. */
+std::string point_text(const Point<3>& point)
+{
+  return "(" + format_number(point[0]) + ", " + format_number(point[1]) + ", " +
+         format_number(point[2]) + ")";
+}
+} // namespace
+
+SolidMeshModel::SolidMeshModel(const MeshParameters& mesh,
+                               const BodiesParameters& bodies,
+                               const std::vector<ContactPairParameters>& pairs,
+                               const BoundaryParameters& boundary)
+    : mesh(mesh), bodies(bodies), boundary(boundary), pairs(pairs), n_cells(0), shortest_edge(0.),
+      largest_coordinate(0.)
+{
+  for (const BodyParameters& body : bodies.bodies)
+  {
+    initial_velocities.push_back(body.initial_velocity.create<3>(3));
+    tractions.push_back(body.surface_traction.create<3>(3));
+    forces.push_back(body.body_force.create<3>(3));
+  }
+}
+
+void SolidMeshModel::create_triangulation(Triangulation<3>& triangulation)
+{
+  geometry = read_gmsh_solid_mesh(mesh.file, mesh.geo_parameters, triangulation);
+  if (geometry.n_bodies != n_bodies())
+    throw InputError(
+        "Mesh/file = '" + mesh.file + "' has " + std::to_string(geometry.n_bodies) +
+        (geometry.n_bodies == 1 ? " body (physical volume)" : " bodies (physical volumes)") +
+        " but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
+  largest_cell_diameter.assign(n_bodies(), 0.);
+  shortest_edge      = std::numeric_limits<double>::max();
+  largest_coordinate = 0.;
+  for (const auto& cell : triangulation.active_cell_iterators())
+  {
+    double& largest = largest_cell_diameter[cell->material_id()];
+    largest         = std::max(largest, cell->diameter());
+    for (unsigned int line = 0; line < cell->n_lines(); ++line)
+      shortest_edge = std::min(shortest_edge, cell->line(line)->diameter());
+    for (const unsigned int v : cell->vertex_indices())
+      for (unsigned int d = 0; d < 3; ++d)
+        largest_coordinate = std::max(largest_coordinate, std::abs(cell->vertex(v)[d]));
+  }
+  n_cells = triangulation.n_active_cells();
+  // The straight (trilinear) cells' volumes: Gauss 2x2x2 is exact for them.
+  const FE_Q<3> linear(1);
+  FEValues<3> cell_values(linear, QGauss<3>(2), update_quadrature_points | update_JxW_values);
+  std::vector<double> volumes(n_bodies(), 0.);
+  body_centroids.assign(n_bodies(), Point<3>());
+  for (const auto& cell : triangulation.active_cell_iterators())
+  {
+    cell_values.reinit(cell);
+    for (const unsigned int q : cell_values.quadrature_point_indices())
+    {
+      volumes[cell->material_id()] += cell_values.JxW(q);
+      body_centroids[cell->material_id()] += cell_values.JxW(q) * cell_values.quadrature_point(q);
+    }
+  }
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+    body_centroids[body] /= volumes[body];
+}
+
+std::vector<BodyMaterial> SolidMeshModel::body_materials() const
+{
+  return dyncontact::body_materials(bodies);
+}
+
+std::unique_ptr<Kinematics<3>> SolidMeshModel::create_kinematics() const
+{
+  return std::make_unique<SolidKinematics>();
+}
+
+Tensor<1, 3> SolidMeshModel::initial_velocity(const types::material_id body,
+                                              const Point<3>& X) const
+{
+  Tensor<1, 3> velocity;
+  for (unsigned int d = 0; d < 3; ++d)
+    velocity[d] = initial_velocities[body]->value(X, d);
+  if (!std::isfinite(velocity.norm_square()))
+    throw InputError("Bodies/Body " + std::to_string(body + 1) +
+                     "/Initial velocity/Function expression gives (" + format_number(velocity[0]) +
+                     ", " + format_number(velocity[1]) + ", " + format_number(velocity[2]) +
+                     ") at the node " + point_text(X) +
+                     " of the body; the initial velocity must be finite at every node.");
+  return velocity;
+}
+
+const BoundarySurface& SolidMeshModel::find_surface(const types::boundary_id id,
+                                                    const std::string& entry) const
+{
+  const BoundarySurface* surface = geometry.surface(id);
+  if (surface == nullptr)
+    throw InputError(entry + " = " + std::to_string(id) + ": Mesh/file = '" + mesh.file +
+                     "' has no boundary surface " + std::to_string(id) + " (physical surface).");
+  return *surface;
+}
+
+double SolidMeshModel::touching_tolerance() const
+{
+  return std::max(1e-9 * shortest_edge,
+                  8. * std::numeric_limits<double>::epsilon() * largest_coordinate);
+}
+
+ContactDescription<3> SolidMeshModel::contact_description(const NodeIndex<3>&) const
+{
+  double stiffest = 0.;
+  for (const BodyParameters& body : bodies.bodies)
+    stiffest = std::max(stiffest, body.youngs_modulus);
+  ContactDescription<3> description;
+  for (const ContactPairParameters& pair : pairs)
+  {
+    const BoundarySurface& slave =
+        find_surface(pair.slave_boundary, pair.source + "/slave boundary");
+    if (!pair.master_boundary)
+    {
+      Point<3> point;
+      Tensor<1, 3> normal;
+      for (unsigned int d = 0; d < 3; ++d)
+      {
+        point[d]  = pair.rigid_plane->point[d];
+        normal[d] = pair.rigid_plane->normal[d];
+      }
+      description.plane_pairs.push_back({pair.slave_boundary,
+                                         point,
+                                         normal,
+                                         stiffest,
+                                         shortest_edge,
+                                         touching_tolerance(),
+                                         pair.source});
+      continue;
+    }
+    const BoundarySurface& master =
+        find_surface(*pair.master_boundary, pair.source + "/master boundary");
+    if (slave.body == master.body)
+      throw InputError(pair.source + ": slave boundary " + std::to_string(slave.id) +
+                       " and master boundary " + std::to_string(master.id) + " are both on body " +
+                       std::to_string(slave.body + 1) +
+                       "; contact of a body with itself is not implemented.");
+    // Node-to-node pairs facing nodes that coincide across to round-off of the mesh generator; it
+    // searches nothing (search radius 0).
+    description.surface_pairs.push_back({pair.slave_boundary,
+                                         *pair.master_boundary,
+                                         stiffest,
+                                         shortest_edge,
+                                         1e-6 * shortest_edge,
+                                         0.,
+                                         touching_tolerance(),
+                                         pair.source + " (Mesh/file = '" + mesh.file + "')"});
+  }
+  return description;
+}
+
+std::vector<FixedBoundary> SolidMeshModel::fixed_boundaries() const
+{
+  std::vector<FixedBoundary> fixed;
+  for (unsigned int k = 0; k < boundary.symmetry_planes.size(); ++k)
+  {
+    const std::string name = "Boundary/Symmetry " + std::to_string(k + 1);
+    const BoundarySurface& surface =
+        find_surface(boundary.symmetry_planes[k].boundary, name + "/boundary");
+    // The normal as read_gmsh_solid_mesh() fitted it, to round-off of the vertices.
+    std::optional<unsigned int> normal_axis;
+    for (unsigned int d = 0; d < 3; ++d)
+      if (std::abs(std::abs(surface.normal[d]) - 1.) <= 1e-12)
+        normal_axis = d;
+    if (!normal_axis)
+    {
+      std::ostringstream normal;
+      normal << "(" << surface.normal[0] << ", " << surface.normal[1] << ", " << surface.normal[2]
+             << ")";
+      throw InputError(name + "/boundary = " + std::to_string(surface.id) +
+                       " is a plane whose normal " + normal.str() +
+                       " is not along x, y or z: a symmetry plane must have its normal along a "
+                       "coordinate axis.");
+    }
+    fixed.push_back({surface.id, {*normal_axis}});
+  }
+  for (unsigned int k = 0; k < boundary.supports.size(); ++k)
+  {
+    const std::string name = "Boundary/Support " + std::to_string(k + 1);
+    find_surface(boundary.supports[k].boundary, name + "/boundary");
+    fixed.push_back({boundary.supports[k].boundary, boundary.supports[k].components});
+  }
+  return fixed;
+}
+
+std::vector<Node<3>> SolidMeshModel::monitor_nodes(const NodeIndex<3>& nodes) const
+{
+  std::vector<Node<3>> monitors;
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+  {
+    const std::vector<double>& given = bodies.bodies[body].monitor_point;
+    const Point<3> point =
+        given.empty() ? body_centroids[body] : Point<3>(given[0], given[1], given[2]);
+    monitors.push_back(nodes.closest_node(body, point));
+    if (given.empty())
+      continue;
+    // Inside a cell of the body a point is within that cell's diameter of one of its nodes.
+    const double distance = point.distance(monitors.back().position);
+    if (distance > largest_cell_diameter[body])
+      throw InputError("Bodies/Body " + std::to_string(body + 1) +
+                       "/monitor point = " + point_text(point) + " is " + format_number(distance) +
+                       " from the nearest node of body " + std::to_string(body + 1) + " at " +
+                       point_text(monitors.back().position) + ", farther than its largest cell (" +
+                       format_number(largest_cell_diameter[body]) + "): give a point in the body.");
+  }
+  return monitors;
+}
+
+std::vector<SurfaceTraction<3>> SolidMeshModel::surface_tractions() const
+{
+  std::vector<SurfaceTraction<3>> loads;
+  for (const BoundarySurface& surface : geometry.surfaces)
+    if (!bodies.bodies[surface.body].surface_traction.is_zero())
+      loads.push_back({surface.id, tractions[surface.body]});
+  return loads;
+}
+
+std::vector<BodyForce<3>> SolidMeshModel::body_forces() const
+{
+  std::vector<BodyForce<3>> loads;
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+    if (!bodies.bodies[body].body_force.is_zero())
+      loads.push_back(
+          {static_cast<types::material_id>(body), forces[body], bodies.bodies[body].density});
+  return loads;
+}
+
+Tensor<1, 3> SolidMeshModel::impact_direction() const
+{
+  Tensor<1, 3> z;
+  z[2] = 1.;
+  return z;
+}
+
+void SolidMeshModel::print_summary(std::ostream& out, const double time_step) const
+{
+  out << "  3d mesh " << mesh.file << ": " << n_cells << " cells (27-node), shortest edge "
+      << shortest_edge << "\n";
+  double speed = 0.;
+  for (unsigned int body = 0; body < n_bodies(); ++body)
+  {
+    const BodyParameters& parameters = bodies.bodies[body];
+    speed                            = std::max(speed, dilatational_wave_speed(parameters));
+    out << "  body " << body + 1 << ": " << parameters.material
+        << ", E = " << parameters.youngs_modulus << ", nu = " << parameters.poissons_ratio
+        << ", rho = " << parameters.density << ", c_p = " << dilatational_wave_speed(parameters)
+        << "\n";
+  }
+  out << "  Courant number c_p dt / h_min = " << speed * time_step / shortest_edge << "\n"
+      << "  reference: none (3D)\n";
+}
+} // namespace dyncontact
