@@ -6,13 +6,17 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold_lib.h>
 #include <deal.II/grid/reference_cell.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <gmsh.h>
+#include <limits>
 #include <set>
 #include <sstream>
 #include <tuple>
@@ -680,6 +684,58 @@ std::tuple<Point<3>, Tensor<1, 3>, double> fit_plane(const std::vector<Point<3>>
     deviation = std::max(deviation, std::abs((point - mean) * normal));
   return {mean, normal, deviation};
 }
+
+/**
+ * Attaches the TransfiniteInterpolationManifold (SphereMeshIds::interior_manifold) of the cells
+ * with a face on a curved boundary; it interpolates from the cells' boundaries, so the boundary
+ * manifolds must be in place.
+ */
+template <int dim>
+void attach_interior_manifold(Triangulation<dim>& triangulation)
+{
+  TransfiniteInterpolationManifold<dim> interior;
+  interior.initialize(triangulation);
+  triangulation.set_manifold(SphereMeshIds::interior_manifold, interior);
+}
+
+/**
+ * The sphere that fits `points` best in the algebraic least-squares sense (|p|^2 = 2 c.p + d,
+ * d = R^2 - |c|^2) and the largest distance of a point from it; a radius of 0 if the points do
+ * not determine one (all on a plane or a line).
+ */
+std::tuple<Point<3>, double, double> fit_sphere(const std::vector<Point<3>>& points)
+{
+  FullMatrix<double> normal_matrix(4, 4);
+  Vector<double> right_hand_side(4), coefficients(4);
+  for (const Point<3>& point : points)
+  {
+    const std::array<double, 4> row{{2. * point[0], 2. * point[1], 2. * point[2], 1.}};
+    for (unsigned int i = 0; i < 4; ++i)
+    {
+      for (unsigned int j = 0; j < 4; ++j)
+        normal_matrix(i, j) += row[i] * row[j];
+      right_hand_side(i) += row[i] * point.norm_square();
+    }
+  }
+  try
+  {
+    normal_matrix.gauss_jordan();
+  }
+  catch (const ExceptionBase&)
+  {
+    return {Point<3>(), 0., std::numeric_limits<double>::infinity()};
+  }
+  normal_matrix.vmult(coefficients, right_hand_side);
+  const Point<3> centre(coefficients(0), coefficients(1), coefficients(2));
+  const double radius_squared = coefficients(3) + centre.norm_square();
+  if (!(radius_squared > 0.))
+    return {centre, 0., std::numeric_limits<double>::infinity()};
+  const double radius = std::sqrt(radius_squared);
+  double deviation    = 0.;
+  for (const Point<3>& point : points)
+    deviation = std::max(deviation, std::abs(point.distance(centre) - radius));
+  return {centre, radius, deviation};
+}
 } // namespace
 
 SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
@@ -725,16 +781,36 @@ SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
         throw InputError(about(filename) + surface +
                          " bounds cells of more than one body; each "
                          "physical surface must bound one body only.");
+      const unsigned int body               = *faces.bodies.begin();
       const auto [point, normal, deviation] = fit_plane(faces.vertices);
-      if (deviation > 1e-6 * size)
-        throw InputError(about(filename) + surface + " (of body " +
-                         std::to_string(*faces.bodies.begin() + 1) +
-                         ") is not planar (a vertex lies " + format_number(deviation) +
-                         " from its best-fit plane); curved surfaces in 3D meshes are not "
-                         "implemented yet: split it into planar physical surfaces.");
-      geometry.surfaces.push_back(
-          {id, *faces.bodies.begin(), point, normal * faces.outward > 0 ? normal : -normal});
+      if (deviation <= 1e-6 * size)
+      {
+        geometry.surfaces.push_back(
+            {id,
+             body,
+             SurfacePlane{point, normal * faces.outward > 0 ? normal : -normal},
+             std::nullopt});
+        continue;
+      }
+      const auto [centre, radius, sphere_deviation] = fit_sphere(faces.vertices);
+      if (!(sphere_deviation <= 1e-6 * radius))
+        throw InputError(about(filename) + surface + " (of body " + std::to_string(body + 1) +
+                         ") is neither a plane (a vertex lies " + format_number(deviation) +
+                         " from its best-fit plane) nor a sphere (" +
+                         (radius > 0. ? "a vertex lies " + format_number(sphere_deviation) +
+                                            " from its best-fit sphere"
+                                      : std::string("no sphere fits")) +
+                         "): split it into physical surfaces of these two kinds.");
+      geometry.surfaces.push_back({id, body, std::nullopt, SurfaceSphere{centre, radius}});
     }
+    for (const auto& cell : triangulation.active_cell_iterators())
+      for (const auto& face : cell->face_iterators())
+        if (face->at_boundary() && geometry.surface(face->boundary_id())->sphere)
+        {
+          face->set_all_manifold_ids(face->boundary_id());
+          cell->set_manifold_id(SphereMeshIds::interior_manifold);
+        }
+    attach_manifolds(geometry, triangulation);
     return geometry;
   }
   catch (const InputError&)
@@ -742,6 +818,14 @@ SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
     triangulation.clear();
     throw;
   }
+}
+
+void attach_manifolds(const SolidMeshGeometry& geometry, Triangulation<3>& triangulation)
+{
+  for (const BoundarySurface& surface : geometry.surfaces)
+    if (surface.sphere)
+      triangulation.set_manifold(surface.id, SphericalManifold<3>(surface.sphere->centre));
+  attach_interior_manifold(triangulation);
 }
 
 const BoundarySurface* SolidMeshGeometry::surface(const types::boundary_id id) const
@@ -780,10 +864,7 @@ void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulat
   for (const BoundaryCurve& curve : geometry.curves)
     if (curve.circle)
       triangulation.set_manifold(curve.id, SphericalManifold<2>(curve.circle->centre));
-  // It interpolates from the cells' boundaries, so it needs the manifolds above in place.
-  TransfiniteInterpolationManifold<2> interior;
-  interior.initialize(triangulation);
-  triangulation.set_manifold(SphereMeshIds::interior_manifold, interior);
+  attach_interior_manifold(triangulation);
 }
 
 MeshGeometry read_gmsh_mesh(const std::string& filename,

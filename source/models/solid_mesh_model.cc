@@ -58,9 +58,11 @@ void SolidMeshModel::create_triangulation(Triangulation<3>& triangulation)
         largest_coordinate = std::max(largest_coordinate, std::abs(cell->vertex(v)[d]));
   }
   n_cells = triangulation.n_active_cells();
-  // The straight (trilinear) cells' volumes: Gauss 2x2x2 is exact for them.
+  // Volumes over each cell in the Q2 mapping of the manifolds (exact for straight cells).
+  const MappingQ<3> mapping(2);
   const FE_Q<3> linear(1);
-  FEValues<3> cell_values(linear, QGauss<3>(2), update_quadrature_points | update_JxW_values);
+  FEValues<3> cell_values(
+      mapping, linear, QGauss<3>(4), update_quadrature_points | update_JxW_values);
   std::vector<double> volumes(n_bodies(), 0.);
   body_centroids.assign(n_bodies(), Point<3>());
   for (const auto& cell : triangulation.active_cell_iterators())
@@ -74,6 +76,11 @@ void SolidMeshModel::create_triangulation(Triangulation<3>& triangulation)
   }
   for (unsigned int body = 0; body < n_bodies(); ++body)
     body_centroids[body] /= volumes[body];
+}
+
+void SolidMeshModel::attach_manifolds(Triangulation<3>& triangulation) const
+{
+  dyncontact::attach_manifolds(geometry, triangulation);
 }
 
 std::vector<BodyMaterial> SolidMeshModel::body_materials() const
@@ -174,18 +181,22 @@ std::vector<FixedBoundary> SolidMeshModel::fixed_boundaries() const
     const std::string name = "Boundary/Symmetry " + std::to_string(k + 1);
     const BoundarySurface& surface =
         find_surface(boundary.symmetry_planes[k].boundary, name + "/boundary");
+    if (!surface.plane)
+      throw InputError(name + "/boundary = " + std::to_string(surface.id) +
+                       " is a sphere, not a plane: a symmetry plane must be a plane with its "
+                       "normal along x, y or z.");
     // The normal as read_gmsh_solid_mesh() fitted it, to round-off of the vertices.
+    const Tensor<1, 3>& normal = surface.plane->normal;
     std::optional<unsigned int> normal_axis;
     for (unsigned int d = 0; d < 3; ++d)
-      if (std::abs(std::abs(surface.normal[d]) - 1.) <= 1e-12)
+      if (std::abs(std::abs(normal[d]) - 1.) <= 1e-12)
         normal_axis = d;
     if (!normal_axis)
     {
-      std::ostringstream normal;
-      normal << "(" << surface.normal[0] << ", " << surface.normal[1] << ", " << surface.normal[2]
-             << ")";
+      std::ostringstream text;
+      text << "(" << normal[0] << ", " << normal[1] << ", " << normal[2] << ")";
       throw InputError(name + "/boundary = " + std::to_string(surface.id) +
-                       " is a plane whose normal " + normal.str() +
+                       " is a plane whose normal " + text.str() +
                        " is not along x, y or z: a symmetry plane must have its normal along a "
                        "coordinate axis.");
     }

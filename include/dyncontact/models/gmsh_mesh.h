@@ -147,13 +147,31 @@ MeshGeometry read_gmsh_mesh(const std::string& filename,
  */
 void attach_manifolds(const MeshGeometry& geometry, Triangulation<2>& triangulation);
 
-/** A physical surface of a 3D mesh, as read_gmsh_solid_mesh() found it: a plane. */
+/** A plane boundary of a 3D mesh. */
+struct SurfacePlane
+{
+  Point<3> point;      ///< a point of the plane (its vertices' mean) [length]
+  Tensor<1, 3> normal; ///< the unit normal, pointing out of the body
+};
+
+/** A spherical boundary of a 3D mesh (a whole sphere or a part of one). */
+struct SurfaceSphere
+{
+  Point<3> centre; ///< [length]
+  double radius;   ///< [length]
+};
+
+/**
+ * A physical surface of a 3D mesh, as read_gmsh_solid_mesh() found it: a plane or a part of a
+ * sphere (exactly one of the two is set).
+ */
 struct BoundarySurface
 {
   types::boundary_id id; ///< the gmsh physical surface tag (>= 1), also its boundary id
   unsigned int body;     ///< 0-based body whose cells it bounds
-  Point<3> point;        ///< a point of the plane (its vertices' mean) [length]
-  Tensor<1, 3> normal;   ///< the unit normal, pointing out of the body
+  std::optional<SurfacePlane> plane;
+  /// set if it is spherical; its faces and their edges then carry manifold id `id`
+  std::optional<SurfaceSphere> sphere;
 };
 
 /** What read_gmsh_solid_mesh() found: the bodies and their boundary surfaces. */
@@ -167,17 +185,28 @@ struct SolidMeshGeometry
 };
 
 /**
+ * Attaches the manifolds of `geometry` to `triangulation`, whose cells, faces and edges carry the
+ * manifold ids read_gmsh_solid_mesh() set: a SphericalManifold on each spherical surface and the
+ * TransfiniteInterpolationManifold on the cells with a face on one (as attach_manifolds() in 2D).
+ */
+void attach_manifolds(const SolidMeshGeometry& geometry, Triangulation<3>& triangulation);
+
+/**
  * Reads a 3D mesh of one or more bodies, all hexahedra, into `triangulation` (which must be
  * empty), as read_gmsh_mesh() reads a 2D one: a `.geo` file meshed in 3D by the gmsh library in
  * first order (its parameters set first), or a `.msh` of any order reduced to first order on its
  * vertices. Physical volume b + 1 holds the cells of body b (material id b, numbered without
  * gaps); every boundary face lies in a physical surface t >= 1 of one body (boundary id t).
- * Each surface must be planar (every vertex within 1e-6 of the mesh's diameter from its best-fit
- * plane): curved surfaces, and manifolds for them, are not implemented yet. Throws InputError,
+ * Each surface is classified from its vertices: a plane (every vertex within 1e-6 of the mesh's
+ * diameter from its best-fit plane; flat faces) or else a part of a sphere (every vertex within
+ * 1e-6 R of the least-squares sphere; its faces and their edges get a SphericalManifold about its
+ * centre, manifold id t, and the cells with a face on it the TransfiniteInterpolationManifold
+ * SphereMeshIds::interior_manifold, which the Q2 mapping follows as in 2D). Throws InputError,
  * one line naming the file: a missing or unreadable file, an unknown extension or parameter,
  * cells that are not hexahedra (with their gmsh element types: tetrahedra, prisms, pyramids),
  * cells in no physical volume, volumes with gaps, boundary faces in no physical surface, a
- * surface bounding two bodies, a curved surface. The triangulation is then left empty.
+ * surface bounding two bodies, a surface that is neither a plane nor a sphere. The triangulation
+ * is then left empty.
  */
 SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
                                        const std::map<std::string, double>& geo_parameters,

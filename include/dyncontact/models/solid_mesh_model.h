@@ -15,12 +15,12 @@ namespace dyncontact
 {
 /**
  * Bodies from a 3D gmsh mesh of hexahedra (Problem/geometry = 3d mesh), 27-node cells (FE_Q<3>(2))
- * with straight faces: every boundary surface is a plane (read_gmsh_solid_mesh(); curved surfaces
- * are not implemented yet). Each body has its own hyperelastic law, density, initial velocity,
- * surface traction and body force (parsed functions of x, y, z, t with three components) and
- * monitor node; symmetry planes and supports on boundary surfaces hold displacement components at
- * zero. Bodies touch through the declared contact pairs: a rigid plane, or another body's surface
- * with matching facing nodes (node-to-node). Momentum and tip motion are reported along z.
+ * whose boundary surfaces are planes or parts of spheres (read_gmsh_solid_mesh(); the Q2 mapping
+ * follows the spheres' manifolds). Each body has its own hyperelastic law, density, initial
+ * velocity, surface traction and body force (parsed functions of x, y, z, t with three components)
+ * and monitor node; symmetry planes and supports on boundary surfaces hold displacement components
+ * at zero. Bodies touch through the declared contact pairs: a rigid plane, or another body's
+ * surface with matching facing nodes (node-to-node). Momentum and tip motion are reported along z.
  */
 class SolidMeshModel : public ProblemModel<3>
 {
@@ -37,6 +37,8 @@ public:
    * bodies 1 .. Bodies/number of bodies.
    */
   void create_triangulation(Triangulation<3>& triangulation) override;
+  /** The spheres' manifolds (attach_manifolds() of gmsh_mesh.h); after create_triangulation(). */
+  void attach_manifolds(Triangulation<3>& triangulation) const override;
   std::vector<BodyMaterial> body_materials() const override;
   std::unique_ptr<Kinematics<3>> create_kinematics() const override;
   /** Body b's `Initial velocity` at X; throws InputError if it is not finite there. */
@@ -52,7 +54,8 @@ public:
   /**
    * The Boundary section's symmetry planes (the normal component on a plane boundary surface
    * whose normal lies along x, y or z) and supports. Throws InputError naming the subsection for
-   * a boundary id the mesh does not have and for a symmetry surface whose normal is oblique.
+   * a boundary id the mesh does not have and for a symmetry surface that is a sphere or a plane
+   * with an oblique normal.
    */
   std::vector<FixedBoundary> fixed_boundaries() const override;
   /**
