@@ -68,10 +68,12 @@ CommandLine CommandLine::parse(const std::vector<std::string>& arguments)
       if (i + 1 < arguments.size() && !arguments[i + 1].empty() && arguments[i + 1][0] != '-')
       {
         command_line.template_kind = arguments[++i];
-        if (command_line.template_kind != "bars" && command_line.template_kind != "mesh")
+        if (command_line.template_kind != "bars" && command_line.template_kind != "mesh" &&
+            command_line.template_kind != "3d")
           throw InputError("--print-parameters " + command_line.template_kind +
-                           ": unknown kind of problem; the kinds are bars (1D bars, the default) "
-                           "and mesh (axisymmetric bodies from a gmsh mesh).");
+                           ": unknown kind of problem; the kinds are bars (1D bars, the default), "
+                           "mesh (axisymmetric bodies from a gmsh mesh) and 3d (3D bodies from a "
+                           "gmsh mesh of hexahedra).");
       }
     }
     else if (argument == "--version")
@@ -119,11 +121,13 @@ std::string CommandLine::usage()
          "  dyncontact --validate FILE.prm [--set ...]   (or FILE.prm --validate)\n"
          "      check the parameters and the mesh as a run does before its first step, run\n"
          "      nothing, write nothing.\n"
-         "  dyncontact --print-parameters [bars|mesh]   (bars if not given)\n"
+         "  dyncontact --print-parameters [bars|mesh|3d]   (bars if not given)\n"
          "      print a parameter file for that kind of problem with every entry it takes,\n"
          "      its documentation, default and allowed values; it runs as printed (bars: one\n"
          "      bar at rest; mesh: the paper's two spheres approaching each other in the\n"
-         "      shipped meshes/two_spheres.geo, one contact pair, 6 s). Save it, edit it, run it.\n"
+         "      shipped meshes/two_spheres.geo, one contact pair, 6 s; 3d: the paper's sphere\n"
+         "      as a coarse quarter dropped on a rigid plane, meshes/quarter_sphere_3d.geo,\n"
+         "      20 s). Save it, edit it, run it.\n"
          "  dyncontact --version\n"
          "      print the version and the git commit of the build.\n"
          "  dyncontact --help\n"

@@ -1,5 +1,6 @@
 #include <dyncontact/models/body_materials.h>
 #include <dyncontact/models/solid_mesh_model.h>
+#include <dyncontact/reference/impact_summary.h>
 
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -7,6 +8,7 @@
 
 #include <cmath>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace dyncontact
@@ -63,7 +65,8 @@ void SolidMeshModel::create_triangulation(Triangulation<3>& triangulation)
   const FE_Q<3> linear(1);
   FEValues<3> cell_values(
       mapping, linear, QGauss<3>(4), update_quadrature_points | update_JxW_values);
-  std::vector<double> volumes(n_bodies(), 0.);
+  std::vector<double>& volumes = body_volumes;
+  volumes.assign(n_bodies(), 0.);
   body_centroids.assign(n_bodies(), Point<3>());
   for (const auto& cell : triangulation.active_cell_iterators())
   {
@@ -260,6 +263,118 @@ Tensor<1, 3> SolidMeshModel::impact_direction() const
   return z;
 }
 
+double SolidMeshModel::whole_body_factor() const
+{
+  return std::pow(2., boundary.symmetry_planes.size());
+}
+
+std::optional<SolidMeshModel::SphereOnPlane> SolidMeshModel::sphere_on_plane() const
+{
+  if (pairs.size() != 1 || pairs.front().master_boundary)
+    return std::nullopt;
+  const ContactPairParameters& pair = pairs.front();
+  const BoundarySurface* slave      = geometry.surface(pair.slave_boundary);
+  const std::vector<double>& normal = pair.rigid_plane->normal;
+  if (slave == nullptr || !slave->sphere || std::abs(std::abs(normal[2]) - 1.) > 1e-12)
+    return std::nullopt;
+  const SurfaceSphere& sphere = *slave->sphere;
+  const double tolerance      = 1e-9 * sphere.radius;
+  // Symmetry planes through the centre containing the plane's normal z cut the sphere into equal
+  // parts, each with its share of the pole.
+  std::set<types::boundary_id> symmetry;
+  for (const SymmetryParameters& plane : boundary.symmetry_planes)
+  {
+    const BoundarySurface* surface = geometry.surface(plane.boundary);
+    if (surface == nullptr || !surface->plane || surface->body != slave->body ||
+        std::abs(surface->plane->normal[2]) > 1e-12 ||
+        std::abs((sphere.centre - surface->plane->point) * surface->plane->normal) > tolerance)
+      return std::nullopt;
+    symmetry.insert(plane.boundary);
+  }
+  bool whole_sphere = true;
+  for (const BoundarySurface& surface : geometry.surfaces)
+    if (surface.body == slave->body && surface.id != slave->id && symmetry.count(surface.id) == 0)
+      whole_sphere = false;
+  const double plane_normal_z = normal[2] > 0. ? 1. : -1.;
+  const double speed = -plane_normal_z * initial_velocities[slave->body]->value(sphere.centre, 2);
+  double gap = plane_normal_z * (sphere.centre[2] - pair.rigid_plane->point[2]) - sphere.radius;
+  if (!(speed > 0.) || gap < -touching_tolerance())
+    return std::nullopt;
+  if (gap <= touching_tolerance())
+    gap = 0.;
+  return SphereOnPlane{slave->body, sphere, speed, gap, plane_normal_z, whole_sphere};
+}
+
+std::optional<HertzImpact> SolidMeshModel::hertz_reference() const
+{
+  const std::optional<SphereOnPlane> impact = sphere_on_plane();
+  if (!impact)
+    return std::nullopt;
+  const BodyParameters& body = bodies.bodies[impact->body];
+  const double mass =
+      impact->whole_sphere
+          ? sphere_mass(
+                {impact->sphere.radius, body.youngs_modulus, body.poissons_ratio, body.density})
+          : body.density * body_volumes[impact->body] * whole_body_factor();
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  return HertzImpact(impact->sphere.radius,
+                     effective_modulus(body.youngs_modulus, body.poissons_ratio, infinity, 0.),
+                     effective_mass(mass, infinity),
+                     impact->approach_speed,
+                     impact->gap / impact->approach_speed);
+}
+
+std::optional<FiniteSphereImpact> SolidMeshModel::finite_sphere_reference() const
+{
+  const std::optional<SphereOnPlane> impact = sphere_on_plane();
+  if (!impact || !impact->whole_sphere)
+    return std::nullopt;
+  const BodyParameters& body = bodies.bodies[impact->body];
+  const ElasticSphere sphere{
+      impact->sphere.radius, body.youngs_modulus, body.poissons_ratio, body.density};
+  // The law's C0 is known for nu = 0.3 only (FiniteSphereImpact): no reference otherwise.
+  try
+  {
+    return FiniteSphereImpact(
+        sphere, sphere, 2. * impact->approach_speed, impact->gap / impact->approach_speed);
+  }
+  catch (const std::exception&)
+  {
+    return std::nullopt;
+  }
+}
+
+void SolidMeshModel::write_reference(const std::string& directory,
+                                     const std::vector<double>& times,
+                                     const std::vector<Node<3>>&) const
+{
+  // Against the rigid plane the law is that of the mirrored pair, whose approach is twice the
+  // sphere's.
+  if (const auto hertz = hertz_reference())
+    write_impact_references(directory, times, *hertz, finite_sphere_reference(), 0.5);
+}
+
+void SolidMeshModel::summarize_run(const std::string& directory,
+                                   const History& history,
+                                   const std::vector<double>& contact_impulses,
+                                   const std::string& status,
+                                   std::ostream& log) const
+{
+  const std::optional<SphereOnPlane> impact = sphere_on_plane();
+  if (!impact)
+    return;
+  // contact_impulses[b] is along z; the plane pushes the sphere along its normal.
+  write_impact_summary(directory,
+                       history,
+                       whole_body_factor(),
+                       impact->plane_normal_z * contact_impulses[impact->body] *
+                           whole_body_factor(),
+                       *hertz_reference(),
+                       finite_sphere_reference(),
+                       status,
+                       log);
+}
+
 void SolidMeshModel::print_summary(std::ostream& out, const double time_step) const
 {
   out << "  3d mesh " << mesh.file << ": " << n_cells << " cells (27-node), shortest edge "
@@ -274,7 +389,18 @@ void SolidMeshModel::print_summary(std::ostream& out, const double time_step) co
         << ", rho = " << parameters.density << ", c_p = " << dilatational_wave_speed(parameters)
         << "\n";
   }
-  out << "  Courant number c_p dt / h_min = " << speed * time_step / shortest_edge << "\n"
-      << "  reference: none (3D)\n";
+  out << "  Courant number c_p dt / h_min = " << speed * time_step / shortest_edge << "\n";
+  if (const auto hertz = hertz_reference())
+    out << "  reference: Hertz's impact of the whole sphere on the rigid plane (hertz.csv, "
+           "impact_summary.csv; the model's force times "
+        << whole_body_factor() << "): R = " << hertz->effective_radius()
+        << ", E* = " << hertz->effective_modulus() << ", m = " << hertz->effective_mass()
+        << ", first touch t = " << hertz->first_touch_time() << ", peak force "
+        << hertz->maximum_force() << ", duration " << hertz->contact_duration()
+        << (finite_sphere_reference() ? "; and the finite-sphere law (finite_sphere.csv)" : "")
+        << "\n";
+  else
+    out << "  reference: none (Hertz needs one pair, a sphere approaching a rigid plane "
+           "perpendicular to z)\n";
 }
 } // namespace dyncontact

@@ -15,11 +15,53 @@ StepMeasures<dim>::StepMeasures(const GeneralizedAlpha& integrator,
                                 const ContactDynamics<dim>& dynamics,
                                 const ImplicitStepper<dim>& stepper,
                                 const BodyImpulses<dim>& body_impulses,
-                                const Tensor<1, dim>& impact_direction)
+                                const Tensor<1, dim>& impact_direction,
+                                const std::vector<Node<dim>>& nodes)
     : integrator(integrator), mass(lumped_mass), bodies(bodies), solver(solver), fields(contact),
       dynamics(dynamics), stepper(stepper), body_impulses(body_impulses),
-      impact_direction(impact_direction)
+      impact_direction(impact_direction), nodes(nodes)
 {
+}
+
+template <int dim>
+void StepMeasures<dim>::measure_momentum(const StepState& state, Measures& measures) const
+{
+  // Sums over the owned nodes: momentum P, mass M, first mass moment S = sum m x and moment of
+  // momentum about the origin sum x cross m v (3D); then L about x_c = S / M is that minus
+  // x_c cross P.
+  std::vector<double> sums(3 * max_dimension + 1, 0.);
+  for (const Node<dim>& node : nodes)
+  {
+    if (!state.velocity.in_local_range(node.dofs[0]))
+      continue;
+    Tensor<1, max_dimension> position, momentum;
+    for (unsigned int d = 0; d < dim; ++d)
+    {
+      const types::global_dof_index dof = node.dofs[d];
+      position[d]                       = node.position[d] + state.displacement(dof);
+      momentum[d]                       = mass[dof] * state.velocity(dof);
+    }
+    const double node_mass                = mass[node.dofs[0]];
+    const Tensor<1, max_dimension> moment = cross_product_3d(position, momentum);
+    for (unsigned int d = 0; d < max_dimension; ++d)
+    {
+      sums[d] += momentum[d];
+      sums[max_dimension + d] += node_mass * position[d];
+      sums[2 * max_dimension + d] += moment[d];
+    }
+    sums.back() += node_mass;
+  }
+  sum_over_ranks(sums, state.velocity.get_mpi_communicator());
+  Tensor<1, max_dimension> first_moment, moment;
+  for (unsigned int d = 0; d < max_dimension; ++d)
+  {
+    measures.momentum[d] = sums[d];
+    first_moment[d]      = sums[max_dimension + d];
+    moment[d]            = sums[2 * max_dimension + d];
+  }
+  if (dim == 3 && sums.back() > 0.)
+    measures.angular_momentum =
+        moment - cross_product_3d(first_moment / sums.back(), measures.momentum);
 }
 
 template <int dim>
@@ -65,6 +107,7 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
     measures.acceleration_jump = fields.max_active_normal_jump(acceleration);
   }
   measures.momenta = body_impulses.momenta(velocity);
+  measure_momentum(state, measures);
   return measures;
 }
 

@@ -84,6 +84,10 @@ std::vector<std::string> StepRecorder<dim>::columns() const
   if (dim > 1)
     for (const std::string column : {"contact_radius", "centre_pressure"})
       columns.push_back(column);
+  if (dim == 3)
+    for (const std::string quantity : {"momentum_", "angular_momentum_"})
+      for (const std::string axis : {"x", "y", "z"})
+        columns.push_back(quantity + axis);
   for (unsigned int b = 1; b <= model.n_bodies(); ++b)
     for (const std::string quantity : {"momentum_", "impulse_", "u_tip_", "v_tip_", "a_tip_"})
       columns.push_back(quantity + std::to_string(b));
@@ -131,6 +135,10 @@ void StepRecorder<dim>::record(const Step& step,
     row.push_back(fields.contact_radius(state.displacement));
     row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
   }
+  if (dim == 3)
+    for (const Tensor<1, max_dimension>& vector : {measures.momentum, measures.angular_momentum})
+      for (unsigned int d = 0; d < max_dimension; ++d)
+        row.push_back(vector[d]);
   const std::vector<double> tips = monitor_motions(state);
   for (unsigned int b = 0; b < monitors.size(); ++b)
     row.insert(

@@ -64,7 +64,8 @@ ContactProblem<dim>::ContactProblem(ProblemModel<dim>& model,
                                                  *dynamics,
                                                  *stepper,
                                                  *impulses,
-                                                 model.impact_direction());
+                                                 model.impact_direction(),
+                                                 d.nodes->nodes());
 }
 
 template <int dim>

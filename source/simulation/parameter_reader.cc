@@ -99,7 +99,7 @@ std::string readable_entry_error(const std::string& message, const std::string& 
         : name.rfind("Support ", 0) == 0 ? "there are only Boundary/number of supports supports"
                                          : "no such subsection is declared";
     return "line " + std::string(match[1]) + ": subsection '" + path + "' is not taken: " + why +
-           " (dyncontact --print-parameters bars|mesh prints what each kind of problem takes).";
+           " (dyncontact --print-parameters bars|mesh|3d prints what each kind of problem takes).";
   }
   if (std::regex_match(message, match, value_from_set))
     return where + " = " + std::string(match[1]) + " is not allowed: it must be " +
@@ -333,7 +333,7 @@ ParameterReader::ParameterReader(const std::string& filename,
     run_parameters.time.parse_parameters(prm);
     const unsigned int dim = space_dimension(size.geometry);
     run_parameters.contact.parse_parameters(prm, dim);
-    run_parameters.newton.parse_parameters(prm);
+    run_parameters.newton.parse_parameters(prm, dim);
     run_parameters.guards.parse_parameters(prm);
     if (size.geometry == GeometryKind::bars)
       run_parameters.geometry.parse_parameters(prm);
@@ -454,12 +454,13 @@ void ParameterReader::write_records(const std::string& directory) const
 
 void ParameterReader::print_template(std::ostream& out, const std::string& kind)
 {
-  const bool mesh = kind == "mesh";
-  AssertThrow(mesh || kind == "bars", ExcMessage("unknown template kind " + kind));
-  const ProblemSize size{mesh ? GeometryKind::axisymmetric_mesh : GeometryKind::bars,
-                         1,
-                         mesh ? 2u : 1u,
-                         mesh ? 1u : 0u};
+  const bool mesh = kind == "mesh", solid = kind == "3d";
+  AssertThrow(mesh || solid || kind == "bars", ExcMessage("unknown template kind " + kind));
+  const GeometryKind geometry = mesh    ? GeometryKind::axisymmetric_mesh
+                                : solid ? GeometryKind::solid_mesh
+                                        : GeometryKind::bars;
+  ProblemSize size{geometry, 1, mesh ? 2u : 1u, mesh || solid ? 1u : 0u};
+  size.n_symmetry_planes = solid ? 2 : 0;
   ParameterHandler prm;
   declare_all(prm, size);
   apply_override(prm, "Problem/geometry=" + geometry_names().name(size.geometry), false);
@@ -483,13 +484,38 @@ void ParameterReader::print_template(std::ostream& out, const std::string& kind)
           "Time integration/time step=0.0025",
           "Time integration/end time=0.35"})
       apply_override(prm, text, false);
-  out << "# A dyncontact parameter file for " << (mesh ? "axisymmetric mesh" : "bars")
+  if (solid)
+    // meshes/quarter_sphere_3d.geo: surfaces 1, 2 the planes x = 0, y = 0, 3 the sphere. The
+    // paper's sphere (R = 8, E = 5e3, rho = 0.001) as a coarse quarter 0.005 above the plane
+    // z = 0, falling at speed 1: it touches at t = 0.005 and leaves at about 0.085 (Hertz).
+    for (const char* text :
+         {"Mesh/file=" DYNCONTACT_MESH_DIRECTORY "/quarter_sphere_3d.geo",
+          "Mesh/geo parameters=R: 8, CentreZ: 8.005, N: 4, NR: 3, PoleGrading: 3",
+          "Bodies/number of bodies=1",
+          "Bodies/Body 1/Young's modulus=5e3",
+          "Bodies/Body 1/density=0.001",
+          "Bodies/Body 1/Initial velocity/Function expression=0; 0; -1",
+          "Boundary/number of symmetry planes=2",
+          "Boundary/Symmetry 1/boundary=1",
+          "Boundary/Symmetry 2/boundary=2",
+          "Contact/number of pairs=1",
+          "Contact/Pair 1/slave boundary=3",
+          "Contact/Pair 1/rigid plane=0, 0, 0; 0, 0, 1",
+          "Newton/method=modified",
+          "Output/vtu interval=0",
+          "Time integration/time step=0.0025",
+          "Time integration/end time=0.095"})
+      apply_override(prm, text, false);
+  const std::string name = mesh ? "axisymmetric mesh" : solid ? "3d mesh" : "bars";
+  out << "# A dyncontact parameter file for " << name
       << " problems, printed by dyncontact --print-parameters " << kind
       << ": every entry, at its default"
-      << (mesh ? " except the problem's (the paper's two spheres approaching each other)" : "")
+      << (mesh    ? " except the problem's (the paper's two spheres approaching each other)"
+          : solid ? " except the problem's (the paper's sphere, a quarter of it, dropped on a "
+                    "rigid plane)"
+                  : "")
       << ".\n# It runs as it is; edit the values. "
-         "(--print-parameters "
-      << (mesh ? "bars" : "mesh") << " prints the other kind.)\n";
+         "(--print-parameters bars, mesh and 3d print the three kinds.)\n";
   prm.print_parameters(out, ParameterHandler::PRM | ParameterHandler::KeepDeclarationOrder);
 }
 } // namespace dyncontact

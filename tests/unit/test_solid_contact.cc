@@ -1,12 +1,14 @@
 // Contact of 3D bodies (Problem/geometry = 3d mesh, issue 28): the patch tests of acceptance A on
-// 27-node hexahedra (a block on a rigid plane; two blocks with matching faces, node-to-node) and a
+// 27-node hexahedra (a block on a rigid plane; two blocks with matching faces, node-to-node), a
 // free impact of two blocks with the paper's rate constraints, whose momentum, force balance and
-// velocity and acceleration jumps are checked against their exact values.
+// velocity and acceleration jumps are checked against their exact values, and a quarter sphere
+// striking a rigid plane against the finite-sphere law (acceptance B, coarse).
 #include <dyncontact/base/global.h>
 
 #include <algorithm>
 #include <cmath>
 #include <gtest/gtest.h>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -110,19 +112,41 @@ TEST(SolidContact, MatchingBlocksPassThePatchTest)
 
 // tests/cases/free_blocks_3d.prm: two free blocks (2 x 2 cells across, matching) approach at
 // relative speed 2 along z, body 1 also sliding along x at 0.1, and collide across the gap 0.01
-// with the paper's rate constraints (Contact/dynamics = taylor-papadopoulos): the total momentum
-// along z is constant to 1e-10 of the bodies' momentum 4 (no external force; measured 2.7e-15), the
-// contact forces balance to 1e-10 of the peak force (measured 8e-13 against about 200), and after
-// each correction the active pairs' normal velocity and acceleration jumps vanish to 1e-10 of the
-// impact speed 2 and of v / dt (measured 5e-15 and 5e-12); with Contact/dynamics = none the
-// velocity jump is of the order of the impact speed (measured 2.2), so the test can fail.
+// with the paper's rate constraints (Contact/dynamics = taylor-papadopoulos). No external force:
+// each component of the total momentum is constant to 1e-10 of the momentum scale 4 (measured
+// 4.2e-15), the history's angular momentum about the common centre of mass is the exact one at
+// t = 0 (to round-off, 1e-12; it is not constant here, measured 10 % change over the impact:
+// node-to-node pairs are held while block 1 slides 0.0055 along x, so a pair's two forces are not
+// collinear, and the small-strain law is not invariant under rotation), and the contact forces
+// balance to 1e-10 of the peak force (measured 6e-13 against about 200); after each correction the
+// active pairs' normal velocity and acceleration jumps vanish to 1e-10 of the impact speed 2 and of
+// v / dt (measured 5e-15 and 5e-12); with Contact/dynamics = none the velocity jump is of the order
+// of the impact speed (measured 2.2 in the first 0.03; the classical scheme's chatter later gains
+// energy, which the energy guard stops at t = 0.053 with MUMPS's round-off), so the test can fail.
 TEST(SolidContact, FreeBlocksKeepMomentumAndTheRateConstraints)
 {
   const SolidRun run      = run_solid_case("tests/cases/free_blocks_3d.prm");
   const History& history  = run.history();
   const double peak_force = largest_magnitude(history, "contact_force");
   ASSERT_GT(peak_force, 10.); // they do collide
-  const double momentum_change   = largest_change_of_sum(history, {"momentum_1", "momentum_2"});
+  const double momentum_change = largest_change_of_sum(history, {"momentum_1", "momentum_2"});
+  double component_change      = 0.;
+  for (const std::string axis : {"x", "y", "z"})
+    component_change =
+        std::max(component_change, largest_change_of_sum(history, {"momentum_" + axis}));
+  // At t = 0 each block translates: L = sum_b m_b (c_b - x_c) x v_b
+  // = 4 (0, 0, -0.505) x (0.1, 0, 1) = (0, -0.202, 0) about the centre of mass (1, 1, 1.005).
+  const double angular_x = history.column("angular_momentum_x").front(),
+               angular_y = history.column("angular_momentum_y").front(),
+               angular_z = history.column("angular_momentum_z").front();
+  std::cout << "  free blocks: momentum components change by " << component_change
+            << ", angular momentum at t = 0 (" << angular_x << ", " << angular_y << ", "
+            << angular_z << "), change " << largest_change_of_sum(history, {"angular_momentum_y"})
+            << " (node-to-node pairs held while sliding: their forces are not collinear)\n";
+  EXPECT_LE(component_change, 4e-10);
+  EXPECT_NEAR(angular_y, -0.202, 1e-12);
+  EXPECT_NEAR(angular_x, 0., 1e-12);
+  EXPECT_NEAR(angular_z, 0., 1e-12);
   const double imbalance         = largest_magnitude(history, "force_imbalance");
   const double velocity_jump     = largest_magnitude(history, "velocity_jump");
   const double acceleration_jump = largest_magnitude(history, "acceleration_jump");
@@ -135,9 +159,67 @@ TEST(SolidContact, FreeBlocksKeepMomentumAndTheRateConstraints)
   EXPECT_LE(acceleration_jump, 1e-10 * 2. / 0.002);
 
   const SolidRun uncorrected =
-      run_solid_case("tests/cases/free_blocks_3d.prm", {"Contact/dynamics=none"});
+      run_solid_case("tests/cases/free_blocks_3d.prm",
+                     {"Contact/dynamics=none", "Time integration/end time=0.03"});
   const double uncorrected_jump = largest_magnitude(uncorrected.history(), "velocity_jump");
   std::cout << "  free blocks without rate constraints: velocity jump " << uncorrected_jump << "\n";
   EXPECT_GE(uncorrected_jump, 0.1);
+}
+
+namespace
+{
+/** The `column` entry (computed, hertz, finite_sphere, ...) of `quantity` in impact_summary.csv. */
+double summary_value(const SolidRun& run, const std::string& quantity, const std::string& column)
+{
+  const std::string& text = run.files.at("impact_summary.csv");
+  std::istringstream lines(text);
+  std::string header, line;
+  std::getline(lines, header);
+  std::vector<std::string> names;
+  std::istringstream header_fields(header);
+  for (std::string name; std::getline(header_fields, name, ',');)
+    names.push_back(name);
+  const auto index = std::find(names.begin(), names.end(), column) - names.begin();
+  while (std::getline(lines, line))
+    if (line.rfind(quantity + ",", 0) == 0)
+    {
+      std::istringstream fields(line);
+      std::string field;
+      for (long i = 0; i <= index; ++i)
+        std::getline(fields, field, ',');
+      return std::stod(field);
+    }
+  ADD_FAILURE() << "no row " << quantity << " in impact_summary.csv";
+  return 0.;
+}
+} // namespace
+
+// prm/sphere_on_rigid_plane_3d.prm on the coarse cubed sphere (N = 4, NR = 3, PoleGrading 3:
+// 416 cells, 11,637 DoFs, cell edge about 0.85 at the pole against the contact radius 1.6): the
+// quarter sphere's impact, times 4, against the finite-sphere law of the whole sphere. The impulse
+// is the momentum change 2 m v of an almost elastic impact, which no mesh error changes much: 1e-3
+// (measured -3.4e-4; the law's own impulse is that of a perfectly elastic impact). The peak force
+// and the duration carry the coarse mesh's error: 3 % and 7 % (measured +2.1 % and +5.7 %; on the
+// shipped mesh, 86,247 DoFs, the benchmark's figures are in the README). Also the model's
+// momentum along z at the end: the rebound, between 0.99 and 1 of the quarter's initial momentum
+// m v / 4 reversed (measured 0.9993).
+TEST(SolidContact, QuarterSphereOnRigidPlaneFollowsTheFiniteSphereLaw)
+{
+  const SolidRun run =
+      run_solid_case("prm/sphere_on_rigid_plane_3d.prm",
+                     {"Mesh/geo parameters=R: 8, CentreZ: 8.005, N: 4, NR: 3, PoleGrading: 3"});
+  const auto difference = [&run](const std::string& quantity)
+  { return summary_value(run, quantity, "finite_sphere_difference"); };
+  std::cout << "  quarter sphere against the finite-sphere law: peak force "
+            << difference("peak_force") << ", duration " << difference("duration") << ", impulse "
+            << difference("impulse") << "\n";
+  EXPECT_LE(std::abs(difference("impulse")), 1e-3);
+  EXPECT_LE(std::abs(difference("peak_force")), 0.03);
+  EXPECT_LE(std::abs(difference("duration")), 0.07);
+  const std::vector<double> momentum = run.history().column("momentum_1");
+  const double rebound               = -momentum.back() / momentum.front();
+  std::cout << "  rebound momentum / initial momentum " << rebound << "\n";
+  EXPECT_GE(rebound, 0.99);
+  EXPECT_LE(rebound, 1.);
 }
 } // namespace dyncontact::testing

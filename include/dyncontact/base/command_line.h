@@ -29,7 +29,7 @@ struct CommandLine
   std::vector<std::string> overrides; ///< "Section/entry=value", in order; --output adds one
   std::string resume_directory;       ///< --resume DIR: continue from DIR/checkpoint.bin
   bool quiet                = false;  ///< --quiet: no progress lines
-  std::string template_kind = "bars"; ///< --print-parameters KIND: "bars" or "mesh"
+  std::string template_kind = "bars"; ///< --print-parameters KIND: "bars", "mesh" or "3d"
 
   /** Throws InputError naming the offending argument. */
   static CommandLine parse(const std::vector<std::string>& arguments);

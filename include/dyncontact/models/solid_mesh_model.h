@@ -5,10 +5,13 @@
 #include <dyncontact/models/gmsh_mesh.h>
 #include <dyncontact/models/mesh_parameters.h>
 #include <dyncontact/models/problem_model.h>
+#include <dyncontact/reference/finite_sphere_impact.h>
+#include <dyncontact/reference/hertz_impact.h>
 
 #include <deal.II/base/parsed_function.h>
 
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace dyncontact
@@ -69,9 +72,58 @@ public:
   std::vector<BodyForce<3>> body_forces() const override;
   /** z. */
   Tensor<1, 3> impact_direction() const override;
+  /**
+   * Writes hertz.csv and, where the finite-sphere law applies, finite_sphere.csv
+   * (write_impact_references()) if the problem is a sphere dropped on a rigid plane, see
+   * hertz_reference().
+   */
+  void write_reference(const std::string& directory,
+                       const std::vector<double>& times,
+                       const std::vector<Node<3>>& monitors) const override;
+  /**
+   * For a sphere dropped on a rigid plane: impact_summary.csv (write_impact_summary()) of the
+   * whole sphere, the model's force and impulse times whole_body_factor().
+   */
+  void summarize_run(const std::string& directory,
+                     const History& history,
+                     const std::vector<double>& contact_impulses,
+                     const std::string& status,
+                     std::ostream& log) const override;
+  /**
+   * Hertz's theory of a sphere dropped on a rigid plane, if the problem is one: one contact pair,
+   * a spherical slave surface against a rigid plane perpendicular to z, the sphere approaching it
+   * (its initial velocity at the centre), not overlapping it; the model may be a symmetric part of
+   * the sphere, cut by symmetry planes through its centre that contain the plane's normal (a
+   * quarter on x = 0 and y = 0). Its mass: the whole sphere's rho 4/3 pi R^3 if the body's
+   * boundary is the sphere and those planes, else rho V times whole_body_factor(). Empty
+   * otherwise. Valid after create_triangulation().
+   */
+  std::optional<HertzImpact> hertz_reference() const;
+  /**
+   * The finite-sphere law of hertz_reference()'s impact for a whole sphere (the mirrored pair:
+   * the sphere twice at twice the speed), where it applies (nu = 0.3, see FiniteSphereImpact).
+   */
+  std::optional<FiniteSphereImpact> finite_sphere_reference() const;
+  /**
+   * How many copies of the model make the whole body: 2 per symmetry plane (4 for a quarter),
+   * the factor by which impact_summary.csv scales the model's force and impulse. The history's
+   * columns are the model's.
+   */
+  double whole_body_factor() const;
   void print_summary(std::ostream& out, double time_step) const override;
 
 private:
+  /** A sphere dropped on a rigid plane (hertz_reference()). */
+  struct SphereOnPlane
+  {
+    unsigned int body;
+    SurfaceSphere sphere;
+    double approach_speed; ///< toward the plane [length/time]
+    double gap;            ///< at t = 0, 0 if touching [length]
+    double plane_normal_z; ///< +1 or -1: the plane's normal (toward the body) along z
+    bool whole_sphere;     ///< the body's boundary is the sphere and symmetry planes
+  };
+  std::optional<SphereOnPlane> sphere_on_plane() const;
   /** The surface with boundary id `id`; throws InputError naming `entry` if there is none. */
   const BoundarySurface& find_surface(types::boundary_id id, const std::string& entry) const;
   /**
@@ -92,5 +144,6 @@ private:
   double largest_coordinate;
   std::vector<double> largest_cell_diameter; ///< per body
   std::vector<Point<3>> body_centroids;      ///< per body
+  std::vector<double> body_volumes;          ///< per body, the model's [length^3]
 };
 } // namespace dyncontact

@@ -16,6 +16,9 @@
 
 namespace dyncontact
 {
+/** The length of Measures' vectors: every dimension's components fit. */
+constexpr int max_dimension = 3;
+
 /** What history.csv, the guards and the log read about one state. */
 struct Measures
 {
@@ -26,6 +29,10 @@ struct Measures
   double velocity_jump = 0., acceleration_jump = 0.; ///< largest normal jump across active pairs
   std::vector<double> momenta;                       ///< per body, along the impact direction
   double momentum_magnitude = 0.;                    ///< sum of |m v| over every DoF
+  Tensor<1, max_dimension> momentum; ///< of all bodies, components x, y (, z) [mass length/time]
+  /// of all bodies about their common centre of mass, sum of m (x - x_c) x v over the nodes at
+  /// their current positions x [mass length^2/time]; 3D only (zero otherwise)
+  Tensor<1, max_dimension> angular_momentum;
 };
 
 /**
@@ -47,7 +54,8 @@ public:
                const ContactDynamics<dim>& dynamics,
                const ImplicitStepper<dim>& stepper,
                const BodyImpulses<dim>& body_impulses,
-               const Tensor<1, dim>& impact_direction);
+               const Tensor<1, dim>& impact_direction,
+               const std::vector<Node<dim>>& nodes);
 
   /**
    * The measures of the current state; `after_a_step` false for the initial state (no balance
@@ -66,5 +74,10 @@ private:
   const ImplicitStepper<dim>& stepper;
   const BodyImpulses<dim>& body_impulses;
   const Tensor<1, dim> impact_direction;
+  /// this rank's nodes (NodeIndex::nodes()): those whose DoFs it owns carry the momenta
+  const std::vector<Node<dim>>& nodes;
+
+  /** Measures::momentum and, in 3D, angular_momentum of `state`. Collective. */
+  void measure_momentum(const StepState& state, Measures& measures) const;
 };
 } // namespace dyncontact

@@ -28,6 +28,10 @@ struct NewtonParameters
   NewtonMethod method;
 
   static void declare_parameters(ParameterHandler& prm);
-  void parse_parameters(ParameterHandler& prm);
+  /**
+   * Reads the entries; `direct solver = auto` becomes klu for `dim` = 1, 2 and mumps for 3, and
+   * the entry is set to the solver used (so that the run's record names it).
+   */
+  void parse_parameters(ParameterHandler& prm, unsigned int dim);
 };
 } // namespace dyncontact
