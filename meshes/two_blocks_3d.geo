@@ -48,25 +48,21 @@ Box(1) = {0, 0, 0, LX, LY, H1};
 Box(2) = {0, 0, H1 + Gap, LX, LY, H2};
 eps = 1e-6 * (LX + LY + H1 + H2);
 For b In {1:2}
-  z0 = (b == 1) ? 0 : H1 + Gap;
-  z1 = (b == 1) ? H1 : H1 + Gap + H2;
   n[] = {NX1, NY1, NZ1};
   If (b == 2)
     n[] = {NX2, NY2, NZ2};
   EndIf
-  // The box's edges along x, y and z: each lies in a thin bounding box around its direction.
-  Transfinite Curve {Curve In BoundingBox {-eps, -eps, z0 - eps, LX + eps, eps, z0 + eps},
-                     Curve In BoundingBox {-eps, LY - eps, z0 - eps, LX + eps, LY + eps, z0 + eps},
-                     Curve In BoundingBox {-eps, -eps, z1 - eps, LX + eps, eps, z1 + eps},
-                     Curve In BoundingBox {-eps, LY - eps, z1 - eps, LX + eps, LY + eps, z1 + eps}} = n[0] + 1;
-  Transfinite Curve {Curve In BoundingBox {-eps, -eps, z0 - eps, eps, LY + eps, z0 + eps},
-                     Curve In BoundingBox {LX - eps, -eps, z0 - eps, LX + eps, LY + eps, z0 + eps},
-                     Curve In BoundingBox {-eps, -eps, z1 - eps, eps, LY + eps, z1 + eps},
-                     Curve In BoundingBox {LX - eps, -eps, z1 - eps, LX + eps, LY + eps, z1 + eps}} = n[1] + 1;
-  Transfinite Curve {Curve In BoundingBox {-eps, -eps, z0 - eps, eps, eps, z1 + eps},
-                     Curve In BoundingBox {LX - eps, -eps, z0 - eps, LX + eps, eps, z1 + eps},
-                     Curve In BoundingBox {-eps, LY - eps, z0 - eps, eps, LY + eps, z1 + eps},
-                     Curve In BoundingBox {LX - eps, LY - eps, z0 - eps, LX + eps, LY + eps, z1 + eps}} = n[2] + 1;
+  // Each edge of box b (its own curves only: with Gap = 0 the other box's edges lie on the same
+  // lines) gets the cell count of the axis it runs along.
+  edges[] = Unique(Abs(Boundary{Boundary{Volume{b};}}));
+  For e In {0:#edges[] - 1}
+    box[] = BoundingBox Curve{edges[e]};
+    For axis In {0:2}
+      If (box[axis + 3] - box[axis] > eps)
+        Transfinite Curve {edges[e]} = n[axis] + 1;
+      EndIf
+    EndFor
+  EndFor
   faces[] = Abs(Boundary{Volume{b};});
   Transfinite Surface {faces[]};
   Recombine Surface {faces[]};

@@ -39,9 +39,8 @@ surface_contact(const typename ContactDescription<dim>::SurfacePair& surfaces,
                                                     surfaces.matching_tolerance,
                                                     surfaces.touching_tolerance);
   case ContactDiscretization::node_to_segment:
-    if constexpr (dim != 2)
-      throw InputError("Contact/discretization = node-to-segment is implemented for 2D "
-                       "(axisymmetric) meshes only.");
+    if constexpr (dim == 1)
+      throw InputError("Contact/discretization = node-to-segment is for meshes, not bars.");
     else
       return std::make_unique<NodeToSegmentContact<dim>>(std::move(surface_a),
                                                          std::move(surface_b),

@@ -39,8 +39,8 @@ void ContactPairParameters::declare_parameters(ParameterHandler& prm)
                     "0",
                     Patterns::Integer(0),
                     "The slave surface of this pair: a boundary id, i.e. the tag of a gmsh "
-                    "physical curve of the mesh (>= 1; not the symmetry axis 1 of an "
-                    "axisymmetric mesh). Its nodes carry the pair's multipliers.");
+                    "physical curve of the mesh (3D: physical surface) (>= 1; not the symmetry "
+                    "axis 1 of an axisymmetric mesh). Its nodes carry the pair's multipliers.");
   prm.declare_entry("master boundary",
                     "0",
                     Patterns::Integer(0),
@@ -90,10 +90,10 @@ void ContactPairParameters::parse_parameters(ParameterHandler& prm,
   const std::vector<double> normal = separator == std::string::npos
                                          ? std::vector<double>()
                                          : parse_numbers(text.substr(separator + 1));
-  double length                    = 0.;
-  for (const double component : normal)
-    length += component * component;
-  length = std::sqrt(length);
+  // hypot in 2D: the same bits as before 3D existed (histories identical version to version).
+  const double length = normal.size() == 2   ? std::hypot(normal[0], normal[1])
+                        : normal.size() == 3 ? std::hypot(normal[0], normal[1], normal[2])
+                                             : 0.;
   if (point.size() != dim || normal.size() != dim || !(length > 0.))
     throw InputError(source + "/rigid plane = '" + text + "' is not allowed: it must be " +
                      (dim == 3 ? "'x, y, z; n_x, n_y, n_z'" : "'r, z; n_r, n_z'") +
@@ -110,9 +110,10 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
                     "0",
                     Patterns::Integer(0, 100),
                     "Mesh problems: how many contact pairs are declared, as subsections "
-                    "'Pair 1', 'Pair 2', ... 0: with two bodies, their surfaces of the sphere "
-                    "meshes (physical curves 2 and 3, body 1 the slave side); with one body, "
-                    "no contact; more bodies need declared pairs. Bars: 0.");
+                    "'Pair 1', 'Pair 2', ... 0: in 2D with two bodies, their surfaces of the "
+                    "sphere meshes (physical curves 2 and 3, body 1 the slave side); with one "
+                    "body, no contact; more bodies (3D: two or more) need declared pairs. Bars: "
+                    "0.");
   for_each_numbered_subsection(prm,
                                "Pair",
                                n_pairs,
@@ -132,12 +133,13 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
       "discretization",
       "node-to-node",
       Patterns::Selection(contact_discretization_names().selection()),
-      "How the two bodies' contact surfaces meet (2D meshes). node-to-node: each facing node of "
+      "How the two bodies' contact surfaces meet. node-to-node: each facing node of "
       "the slave body against the node of the master body across from it; the facing surfaces "
       "must have matching nodes (mirrored meshes). node-to-segment: each slave surface node "
-      "against its projection on the curved quadratic faces of the master body, for any meshes; "
-      "the paper's rate correction (Contact/dynamics) acts on the slave node and the master "
-      "face's nodes. mortar: each slave node's gap weighted over its faces by its dual shape "
+      "against its projection on the curved quadratic faces of the master body, for any meshes "
+      "(in 3D node-to-surface, on 9-node faces); the paper's rate correction (Contact/dynamics) "
+      "acts on the slave node and the master face's nodes. mortar (2D only): each slave node's gap "
+      "weighted over its faces by its dual shape "
       "function, against the master surface under them (dual Lagrange multipliers, "
       "segment-based integration); passes the patch test on non-matching meshes, where "
       "node-to-segment's pressure oscillates between vertex and mid-side nodes; the rate "

@@ -1,5 +1,5 @@
+#include <dyncontact/contact/face_patch.h>
 #include <dyncontact/contact/mortar_contact.h>
-#include <dyncontact/contact/quadratic_face.h>
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/tensor.h>
@@ -138,7 +138,7 @@ void MortarContact<dim>::integrate_face(const unsigned int face,
                                         std::vector<MortarRow>& rows) const
 {
   const std::vector<unsigned int>& nodes = slave_surface().face_nodes()[face];
-  const QuadraticFace<dim> slave_face    = quadratic_face(nodes, slave_positions);
+  const QuadraticFace<dim> slave_face    = face_patch<dim>(nodes, slave_positions);
   std::array<Tensor<1, dim>, 3> normals;
   for (unsigned int a = 0; a < 3; ++a)
     normals[a] = slave_normals[nodes[a]];
@@ -173,7 +173,7 @@ void MortarContact<dim>::integrate_face(const unsigned int face,
   for (const unsigned int master : master_faces_of_slave_face[face])
   {
     const auto master_face =
-        quadratic_face(master_surface().face_nodes()[master], master_positions);
+        face_patch<dim>(master_surface().face_nodes()[master], master_positions);
     const Overlap overlap{master,
                           slave_parameter(slave_face, normals, master_face.points[0]),
                           slave_parameter(slave_face, normals, master_face.points[1])};
@@ -204,7 +204,7 @@ void MortarContact<dim>::integrate_face(const unsigned int face,
         if (xi < overlap.lowest() || xi > overlap.highest())
           continue;
         const auto master_face =
-            quadratic_face(master_surface().face_nodes()[overlap.master_face], master_positions);
+            face_patch<dim>(master_surface().face_nodes()[overlap.master_face], master_positions);
         const double guess = (xi - overlap.xi_at_start) / (overlap.xi_at_end - overlap.xi_at_start);
         const auto eta     = master_face.ray_point(
             slave_point, direction, along_slave_normal, std::clamp(guess, 0., 1.));

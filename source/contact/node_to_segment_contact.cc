@@ -1,5 +1,5 @@
+#include <dyncontact/contact/face_patch.h>
 #include <dyncontact/contact/node_to_segment_contact.h>
-#include <dyncontact/contact/quadratic_face.h>
 
 #include <algorithm>
 #include <array>
@@ -32,23 +32,25 @@ Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
                                  const std::vector<Tensor<1, dim>>* master_normals,
                                  ContactPair<dim>& pair)
 {
+  using Patch           = FacePatch<dim>;
   const auto normals_of = [&](const unsigned int face)
   {
-    std::array<Tensor<1, dim>, 3> normals; // zero: the ray along n_s alone
+    std::array<Tensor<1, dim>, Patch::n_nodes> normals; // zero: the ray along n_s alone
     if (master_normals != nullptr)
-      for (unsigned int i = 0; i < 3; ++i)
+      for (unsigned int i = 0; i < Patch::n_nodes; ++i)
         normals[i] = (*master_normals)[master_surface.face_nodes()[face][i]];
     return normals;
   };
   unsigned int chosen_face = faces.front();
-  double chosen_xi = 0., chosen_distance = std::numeric_limits<double>::max();
-  bool on_ray = false;
+  typename Patch::Parameter chosen_xi{};
+  double chosen_distance = std::numeric_limits<double>::max();
+  bool on_ray            = false;
   for (const unsigned int face : faces)
   {
-    const auto curve      = quadratic_face(master_surface.face_nodes()[face], master_positions);
+    const auto curve      = face_patch<dim>(master_surface.face_nodes()[face], master_positions);
     const auto closest    = curve.closest_point(slave_point);
     const auto ray_xi     = curve.ray_point(slave_point, n_s, normals_of(face), closest.xi);
-    const double xi       = ray_xi ? *ray_xi : closest.xi;
+    const auto xi         = ray_xi ? *ray_xi : closest.xi;
     const double distance = curve.point(xi).distance(slave_point);
     // A point on the ray beats any closest point; among equals, the nearest.
     if ((ray_xi && !on_ray) || (bool(ray_xi) == on_ray && distance < chosen_distance))
@@ -59,11 +61,11 @@ Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
       on_ray          = bool(ray_xi);
     }
   }
-  const auto weights  = QuadraticFace<dim>::shape_values(chosen_xi);
+  const auto weights  = Patch::shape_values(chosen_xi);
   const auto normals  = normals_of(chosen_face);
   Tensor<1, dim> nbar = n_s;
   pair.masters.clear();
-  for (unsigned int i = 0; i < 3; ++i)
+  for (unsigned int i = 0; i < Patch::n_nodes; ++i)
   {
     pair.masters.push_back(
         {master_surface.nodes()[master_surface.face_nodes()[chosen_face][i]], weights[i]});
@@ -114,8 +116,9 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
   const std::vector<Node<dim>>& slave_nodes = this->slave_surface.nodes();
   const auto& master_faces                  = this->master_surface.face_nodes();
   for (const auto& face : master_faces)
-    AssertThrow(face.size() == 3,
-                ExcMessage("node-to-segment contact needs Q2 faces in 2D (three nodes a face)"));
+    AssertThrow(face.size() == FacePatch<dim>::n_nodes,
+                ExcMessage("node-to-segment contact needs Q2 faces (three nodes a face in 2D, nine "
+                           "in 3D)"));
   const auto undeformed_slave  = this->slave_surface.reference_positions();
   const auto undeformed_master = this->master_surface.reference_positions();
   const auto slave_areas       = this->slave_surface.lumped_areas(undeformed_slave);
@@ -126,7 +129,7 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
   {
     std::vector<unsigned int> faces;
     for (unsigned int face = 0; face < master_faces.size(); ++face)
-      if (quadratic_face(master_faces[face], undeformed_master)
+      if (face_patch<dim>(master_faces[face], undeformed_master)
               .closest_point(slave_nodes[i].position)
               .distance <= search_radius)
         faces.push_back(face);
@@ -238,6 +241,8 @@ std::vector<Node<dim>> NodeToSegmentContact<dim>::surface_nodes() const
   return nodes_of_both(slave_surface, master_surface);
 }
 
-// 2D only, the exception to base/dimensions.h: its face patch is a 3-node line.
+// 2D and 3D, the exception to base/dimensions.h: its face patch (FacePatch) is a 3-node line or a
+// 9-node quadrilateral.
 template class NodeToSegmentContact<2>;
+template class NodeToSegmentContact<3>;
 } // namespace dyncontact

@@ -96,11 +96,20 @@ void BoundaryParameters::parse_parameters(ParameterHandler& prm, const unsigned 
   prm.enter_subsection("Boundary");
   symmetry_planes.resize(prm.get_integer("number of symmetry planes"));
   supports.resize(prm.get_integer("number of supports"));
-  for_each_numbered_subsection(prm,
-                               "Symmetry",
-                               symmetry_planes.size(),
-                               [&](const unsigned int k, const std::string& name)
-                               { symmetry_planes[k].parse_parameters(prm, "Boundary/" + name); });
+  for_each_numbered_subsection(
+      prm,
+      "Symmetry",
+      symmetry_planes.size(),
+      [&](const unsigned int k, const std::string& name)
+      {
+        symmetry_planes[k].parse_parameters(prm, "Boundary/" + name);
+        for (unsigned int j = 0; j < k; ++j)
+          if (symmetry_planes[j].boundary == symmetry_planes[k].boundary)
+            throw InputError("Boundary/" + name +
+                             "/boundary = " + std::to_string(symmetry_planes[k].boundary) +
+                             " is Boundary/Symmetry " + std::to_string(j + 1) +
+                             "'s too: give each symmetry plane once.");
+      });
   for_each_numbered_subsection(prm,
                                "Support",
                                supports.size(),

@@ -282,6 +282,10 @@ std::string first_order_mesh(const std::string& mesh_file,
     {
       gmsh::option::setNumber("Mesh.ElementOrder", 1);
       gmsh::option::setNumber("Mesh.RecombineAll", 1);
+      // gmsh meshes surfaces inside an OpenMP region, out of which its error exception (e.g. a
+      // transfinite surface whose sides do not match) ended the process: while meshing, an error
+      // only stops the meshing, and the errors it logged are reported below.
+      gmsh::option::setNumber("General.AbortOnError", 1);
       gmsh::model::mesh::generate(dim);
     }
     const bool higher_order = check_element_types(mesh_file, dim);
@@ -705,33 +709,39 @@ void attach_interior_manifold(Triangulation<dim>& triangulation)
  */
 std::tuple<Point<3>, double, double> fit_sphere(const std::vector<Point<3>>& points)
 {
+  // In coordinates relative to the points' mean, scaled by their spread, so that the normal
+  // equations do not lose digits far from the origin.
+  Point<3> mean;
+  for (const Point<3>& point : points)
+    mean += point / static_cast<double>(points.size());
+  double scale = 0.;
+  for (const Point<3>& point : points)
+    scale = std::max(scale, point.distance(mean));
+  if (!(scale > 0.))
+    return {mean, 0., std::numeric_limits<double>::infinity()};
   FullMatrix<double> normal_matrix(4, 4);
   Vector<double> right_hand_side(4), coefficients(4);
   for (const Point<3>& point : points)
   {
-    const std::array<double, 4> row{{2. * point[0], 2. * point[1], 2. * point[2], 1.}};
+    const Tensor<1, 3> q = (point - mean) / scale;
+    const std::array<double, 4> row{{2. * q[0], 2. * q[1], 2. * q[2], 1.}};
     for (unsigned int i = 0; i < 4; ++i)
     {
       for (unsigned int j = 0; j < 4; ++j)
         normal_matrix(i, j) += row[i] * row[j];
-      right_hand_side(i) += row[i] * point.norm_square();
+      right_hand_side(i) += row[i] * q.norm_square();
     }
   }
-  try
-  {
-    normal_matrix.gauss_jordan();
-  }
-  catch (const ExceptionBase&)
-  {
-    return {Point<3>(), 0., std::numeric_limits<double>::infinity()};
-  }
+  normal_matrix.gauss_jordan();
   normal_matrix.vmult(coefficients, right_hand_side);
-  const Point<3> centre(coefficients(0), coefficients(1), coefficients(2));
-  const double radius_squared = coefficients(3) + centre.norm_square();
-  if (!(radius_squared > 0.))
-    return {centre, 0., std::numeric_limits<double>::infinity()};
-  const double radius = std::sqrt(radius_squared);
-  double deviation    = 0.;
+  const Tensor<1, 3> centre_offset({coefficients(0), coefficients(1), coefficients(2)});
+  const double radius_squared = coefficients(3) + centre_offset.norm_square();
+  // Singular equations (points on a plane or a line) give no finite, positive radius.
+  if (!(radius_squared > 0.) || !std::isfinite(radius_squared))
+    return {mean, 0., std::numeric_limits<double>::infinity()};
+  const Point<3> centre = mean + scale * centre_offset;
+  const double radius   = scale * std::sqrt(radius_squared);
+  double deviation      = 0.;
   for (const Point<3>& point : points)
     deviation = std::max(deviation, std::abs(point.distance(centre) - radius));
   return {centre, radius, deviation};
@@ -753,6 +763,7 @@ SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
       std::set<unsigned int> bodies;
       std::vector<Point<3>> vertices;
       Tensor<1, 3> outward;
+      std::map<unsigned int, unsigned int> faces_at_vertex; ///< by vertex index
     };
     std::map<types::boundary_id, SurfaceFaces> surfaces;
     for (const auto& cell : triangulation.active_cell_iterators())
@@ -770,7 +781,10 @@ SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
           SurfaceFaces& faces = surfaces[face->boundary_id()];
           faces.bodies.insert(cell->material_id());
           for (const unsigned int v : face->vertex_indices())
+          {
             faces.vertices.push_back(face->vertex(v));
+            ++faces.faces_at_vertex[face->vertex_index(v)];
+          }
           faces.outward += face->center() - cell->center();
         }
     const double size = GridTools::diameter(triangulation);
@@ -793,6 +807,19 @@ SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
         continue;
       }
       const auto [centre, radius, sphere_deviation] = fit_sphere(faces.vertices);
+      // Vertices all on the surface's boundary (one layer of faces) may lie on two coaxial circles,
+      // which one sphere always passes through: a cylinder or a cone is no sphere. A sphere needs
+      // a vertex inside the surface (at least three of its faces around it).
+      const bool has_inner_vertex =
+          std::any_of(faces.faces_at_vertex.begin(),
+                      faces.faces_at_vertex.end(),
+                      [](const auto& vertex) { return vertex.second >= 3; });
+      if (!has_inner_vertex)
+        throw InputError(about(filename) + surface + " (of body " + std::to_string(body + 1) +
+                         ") is not a plane (a vertex lies " + format_number(deviation) +
+                         " from its best-fit plane), and it has no vertex inside it, so it cannot "
+                         "be told from a cylinder or cone: a curved surface must be a sphere "
+                         "meshed with at least two layers of faces.");
       if (!(sphere_deviation <= 1e-6 * radius))
         throw InputError(about(filename) + surface + " (of body " + std::to_string(body + 1) +
                          ") is neither a plane (a vertex lies " + format_number(deviation) +
@@ -803,6 +830,26 @@ SolidMeshGeometry read_gmsh_solid_mesh(const std::string& filename,
                          "): split it into physical surfaces of these two kinds.");
       geometry.surfaces.push_back({id, body, std::nullopt, SurfaceSphere{centre, radius}});
     }
+    // A plane meeting a sphere along an edge must pass through its centre: the spherical
+    // manifold puts the edge's mid-side nodes on a great circle, off any other plane.
+    for (const BoundarySurface& sphere : geometry.surfaces)
+      for (const BoundarySurface& plane : geometry.surfaces)
+        if (sphere.sphere && plane.plane && sphere.body == plane.body)
+        {
+          const auto& sphere_vertices = surfaces.at(sphere.id).faces_at_vertex;
+          bool shares_a_vertex        = false;
+          for (const auto& vertex : surfaces.at(plane.id).faces_at_vertex)
+            shares_a_vertex = shares_a_vertex || sphere_vertices.count(vertex.first) > 0;
+          const double offset =
+              std::abs((sphere.sphere->centre - plane.plane->point) * plane.plane->normal);
+          if (shares_a_vertex && offset > 1e-6 * sphere.sphere->radius)
+            throw InputError(about(filename) + "physical surface " + std::to_string(plane.id) +
+                             " (a plane) meets the sphere of physical surface " +
+                             std::to_string(sphere.id) + " but misses its centre by " +
+                             format_number(offset) +
+                             ": a plane next to a sphere must pass through its centre (their "
+                             "common edges are curved along great circles).");
+        }
     for (const auto& cell : triangulation.active_cell_iterators())
       for (const auto& face : cell->face_iterators())
         if (face->at_boundary() && geometry.surface(face->boundary_id())->sphere)

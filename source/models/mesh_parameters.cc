@@ -101,7 +101,9 @@ void MeshParameters::declare_parameters(ParameterHandler& prm)
                     "relative path is relative to the directory of the parameter file. Physical "
                     "surface b is body b, physical curve 1 the symmetry axis, every other physical "
                     "curve a boundary of one body, a circle about the axis or a straight line; in "
-                    "the sphere meshes physical curve b + 1 is the surface of body b (see "
+                    "the sphere meshes physical curve b + 1 is the surface of body b. A 3D mesh "
+                    "(Problem/geometry = 3d mesh): hexahedra, physical volume b is body b, every "
+                    "physical surface a boundary of one body, a plane or a part of a sphere (see "
                     "meshes/README.md).",
                     true);
   prm.declare_entry("geo parameters",

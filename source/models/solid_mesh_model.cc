@@ -47,6 +47,9 @@ void SolidMeshModel::create_triangulation(Triangulation<3>& triangulation)
         (geometry.n_bodies == 1 ? " body (physical volume)" : " bodies (physical volumes)") +
         " but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
   largest_cell_diameter.assign(n_bodies(), 0.);
+  boundary_vertices.assign(n_bodies(), {});
+  body_boxes.assign(n_bodies(), BoundingBox<3>());
+  std::vector<bool> boxed(n_bodies(), false);
   shortest_edge      = std::numeric_limits<double>::max();
   largest_coordinate = 0.;
   for (const auto& cell : triangulation.active_cell_iterators())
@@ -56,8 +59,21 @@ void SolidMeshModel::create_triangulation(Triangulation<3>& triangulation)
     for (unsigned int line = 0; line < cell->n_lines(); ++line)
       shortest_edge = std::min(shortest_edge, cell->line(line)->diameter());
     for (const unsigned int v : cell->vertex_indices())
+    {
       for (unsigned int d = 0; d < 3; ++d)
         largest_coordinate = std::max(largest_coordinate, std::abs(cell->vertex(v)[d]));
+      const types::material_id body = cell->material_id();
+      const BoundingBox<3> point(std::make_pair(cell->vertex(v), cell->vertex(v)));
+      if (boxed[body])
+        body_boxes[body].merge_with(point);
+      else
+        body_boxes[body] = point;
+      boxed[body] = true;
+    }
+    for (const auto& face : cell->face_iterators())
+      if (face->at_boundary())
+        for (const unsigned int v : face->vertex_indices())
+          boundary_vertices[cell->material_id()].push_back(face->vertex(v));
   }
   n_cells = triangulation.n_active_cells();
   // Volumes over each cell in the Q2 mapping of the manifolds (exact for straight cells).
@@ -121,6 +137,21 @@ const BoundarySurface& SolidMeshModel::find_surface(const types::boundary_id id,
   return *surface;
 }
 
+double SolidMeshModel::search_radius(const unsigned int body_a, const unsigned int body_b) const
+{
+  // As MeshModel's for bodies other than spheres: the gap measured between their boundary vertices
+  // (at least the true gap) plus a quarter of the smaller extent of the two bodies.
+  double closest = std::numeric_limits<double>::max();
+  for (const Point<3>& a : boundary_vertices[body_a])
+    for (const Point<3>& b : boundary_vertices[body_b])
+      closest = std::min(closest, a.distance(b));
+  double extent = std::numeric_limits<double>::max();
+  for (const unsigned int body : {body_a, body_b})
+    for (unsigned int d = 0; d < 3; ++d)
+      extent = std::min(extent, body_boxes[body].side_length(d));
+  return closest + 0.25 * extent;
+}
+
 double SolidMeshModel::touching_tolerance() const
 {
   return std::max(1e-9 * shortest_edge,
@@ -129,6 +160,10 @@ double SolidMeshModel::touching_tolerance() const
 
 ContactDescription<3> SolidMeshModel::contact_description(const NodeIndex<3>&) const
 {
+  if (pairs.empty() && n_bodies() > 1)
+    throw InputError("Bodies/number of bodies = " + std::to_string(n_bodies()) +
+                     ": in 3D the contact pairs must be declared (Contact/number of pairs and "
+                     "Contact/Pair k); the bodies would otherwise pass through each other.");
   double stiffest = 0.;
   for (const BodyParameters& body : bodies.bodies)
     stiffest = std::max(stiffest, body.youngs_modulus);
@@ -162,14 +197,13 @@ ContactDescription<3> SolidMeshModel::contact_description(const NodeIndex<3>&) c
                        " and master boundary " + std::to_string(master.id) + " are both on body " +
                        std::to_string(slave.body + 1) +
                        "; contact of a body with itself is not implemented.");
-    // Node-to-node pairs facing nodes that coincide across to round-off of the mesh generator; it
-    // searches nothing (search radius 0).
+    // Node-to-node pairs facing nodes that coincide across to round-off of the mesh generator.
     description.surface_pairs.push_back({pair.slave_boundary,
                                          *pair.master_boundary,
                                          stiffest,
                                          shortest_edge,
                                          1e-6 * shortest_edge,
-                                         0.,
+                                         search_radius(slave.body, master.body),
                                          touching_tolerance(),
                                          pair.source + " (Mesh/file = '" + mesh.file + "')"});
   }
@@ -291,11 +325,25 @@ std::optional<SolidMeshModel::SphereOnPlane> SolidMeshModel::sphere_on_plane() c
       return std::nullopt;
     symmetry.insert(plane.boundary);
   }
+  const double plane_normal_z = normal[2] > 0. ? 1. : -1.;
+  // The pole, the sphere's point nearest the plane, must be the body's extreme point toward it
+  // (a cap, not a seat or a patch away from the pole), and no other boundary of the body may pass
+  // through it but the symmetry planes (a free face there is no Hertz contact).
+  Point<3> pole = sphere.centre;
+  pole[2] -= plane_normal_z * sphere.radius;
+  const BoundingBox<3>& box = body_boxes[slave->body];
+  const double extreme_z    = plane_normal_z > 0. ? box.lower_bound(2) : box.upper_bound(2);
+  if (std::abs(extreme_z - pole[2]) > tolerance)
+    return std::nullopt;
   bool whole_sphere = true;
   for (const BoundarySurface& surface : geometry.surfaces)
     if (surface.body == slave->body && surface.id != slave->id && symmetry.count(surface.id) == 0)
+    {
       whole_sphere = false;
-  const double plane_normal_z = normal[2] > 0. ? 1. : -1.;
+      if (!surface.plane ||
+          std::abs((pole - surface.plane->point) * surface.plane->normal) <= tolerance)
+        return std::nullopt;
+    }
   const double speed = -plane_normal_z * initial_velocities[slave->body]->value(sphere.centre, 2);
   double gap = plane_normal_z * (sphere.centre[2] - pair.rigid_plane->point[2]) - sphere.radius;
   if (!(speed > 0.) || gap < -touching_tolerance())
@@ -391,8 +439,9 @@ void SolidMeshModel::print_summary(std::ostream& out, const double time_step) co
   }
   out << "  Courant number c_p dt / h_min = " << speed * time_step / shortest_edge << "\n";
   if (const auto hertz = hertz_reference())
-    out << "  reference: Hertz's impact of the whole sphere on the rigid plane (hertz.csv, "
-           "impact_summary.csv; the model's force times "
+    out << "  reference: Hertz's impact of the "
+        << (sphere_on_plane()->whole_sphere ? "whole sphere" : "body's spherical end")
+        << " on the rigid plane (hertz.csv, impact_summary.csv; the model's force times "
         << whole_body_factor() << "): R = " << hertz->effective_radius()
         << ", E* = " << hertz->effective_modulus() << ", m = " << hertz->effective_mass()
         << ", first touch t = " << hertz->first_touch_time() << ", peak force "
@@ -401,6 +450,6 @@ void SolidMeshModel::print_summary(std::ostream& out, const double time_step) co
         << "\n";
   else
     out << "  reference: none (Hertz needs one pair, a sphere approaching a rigid plane "
-           "perpendicular to z)\n";
+           "perpendicular to z, its pole on no boundary of the body but symmetry planes)\n";
 }
 } // namespace dyncontact

@@ -107,7 +107,8 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
     measures.acceleration_jump = fields.max_active_normal_jump(acceleration);
   }
   measures.momenta = body_impulses.momenta(velocity);
-  measure_momentum(state, measures);
+  if (dim == 3) // history.csv has these columns in 3D only
+    measure_momentum(state, measures);
   return measures;
 }
 

@@ -37,7 +37,8 @@ void ProblemParameters::declare_parameters(ParameterHandler& prm)
       "mesh: cross-sections of long bodies in the (x, y) plane, unit thickness, "
       "from a gmsh mesh as for axisymmetric mesh but without an axis. 3d mesh: bodies in "
       "(x, y, z) from a gmsh mesh of hexahedra, 27-node cells (physical volume b is "
-      "body b, every physical surface a plane boundary of one body).");
+      "body b, every physical surface a boundary of one body: a plane or a part of a "
+      "sphere).");
   prm.leave_subsection();
 }
 

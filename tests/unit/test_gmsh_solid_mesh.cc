@@ -173,6 +173,51 @@ TEST(GmshSolidMesh, MeshesItCannotTakeAreOneLineErrors)
                             "Physical Surface(1) = {f[1], v[0], v[2], v[3], v[4], v[5]};\n"),
       "physical surface 1 (of body 1) is neither a plane (a vertex lies 0.700743 from its best-fit "
       "plane) nor a sphere (a vertex lies 0.207107 from its best-fit sphere)");
+  // A transfinite surface whose opposite sides have 2 and 3 cells: gmsh cannot mesh it, and its
+  // error (thrown inside gmsh's OpenMP region) once ended the process.
+  expect_solid_input_error(
+      directory.write("mismatched.geo",
+                      "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {1, 1, 0};\n"
+                      "Point(4) = {0, 1, 0}; Line(1) = {1, 2}; Line(2) = {2, 3};\n"
+                      "Line(3) = {3, 4}; Line(4) = {4, 1}; Curve Loop(1) = {1, 2, 3, 4};\n"
+                      "Plane Surface(1) = {1}; Transfinite Curve {1} = 3;\n"
+                      "Transfinite Curve {3} = 4; Transfinite Surface {1};\n"
+                      "Recombine Surface {1};\n"
+                      "v[] = Extrude {0, 0, 1} { Surface{1}; Layers{1}; Recombine; };\n"
+                      "Physical Volume(1) = {v[1]};\n"
+                      "Physical Surface(1) = {1, v[0], v[2], v[3], v[4], v[5]};\n"),
+      "cannot be meshed using the transfinite algo");
+  // A quarter of a thick ring one cell high: its cylinders' vertices lie on two circles each, which
+  // a sphere passes through; without a vertex inside the surface it is no sphere.
+  const std::string ring = "Point(1) = {0, 0, 0}; Point(2) = {1, 0, 0}; Point(3) = {2, 0, 0};\n"
+                           "Point(4) = {0, 2, 0}; Point(5) = {0, 1, 0}; Line(1) = {2, 3};\n"
+                           "Circle(2) = {3, 1, 4}; Line(3) = {4, 5}; Circle(4) = {5, 1, 2};\n"
+                           "Curve Loop(1) = {1, 2, 3, 4}; Plane Surface(1) = {1};\n"
+                           "Transfinite Curve {1, 3} = 2; Transfinite Curve {2, 4} = 3;\n"
+                           "Transfinite Surface {1}; Recombine Surface {1};\n"
+                           "v[] = Extrude {0, 0, 0.3} { Surface{1}; Layers{1}; Recombine; };\n"
+                           "Physical Volume(1) = {v[1]};\n";
+  expect_solid_input_error(
+      directory.write("ring.geo",
+                      ring + "Physical Surface(1) = {1}; Physical Surface(2) = {v[0]};\n"
+                             "Physical Surface(3) = {v[2]}; Physical Surface(4) = {v[3]};\n"
+                             "Physical Surface(5) = {v[4]}; Physical Surface(6) = {v[5]};\n"),
+      "physical surface 4 (of body 1) is not a plane (a vertex lies 0.");
+  // A block with a spherical top (the sphere of radius 3 about (0, 0, -2), z <= 1) cut by the
+  // planes x = 0.2, 0.6: those planes miss the sphere's centre, so the spherical manifold would
+  // bend their edges with the sphere out of them.
+  expect_solid_input_error(
+      directory.write("cap.geo",
+                      "SetFactory(\"OpenCASCADE\");\n"
+                      "Box(1) = {0.2, 0.2, 0, 0.4, 0.4, 2};\n"
+                      "Sphere(2) = {0, 0, -2, 3};\n"
+                      "BooleanIntersection(3) = { Volume{1}; Delete; }{ Volume{2}; Delete; };\n"
+                      "Transfinite Curve {:} = 4; Transfinite Surface {:}; Recombine Surface {:};\n"
+                      "Transfinite Volume {:};\n"
+                      "Physical Volume(1) = {3};\n"
+                      "s[] = Abs(Boundary{Volume{3};});\n"
+                      "For i In {0:#s[] - 1}\n  Physical Surface(i + 1) = {s[i]};\nEndFor\n"),
+      "misses its centre by");
   // A 2D mesh (the rectangle of quadrilaterals alone): no volumes.
   expect_solid_input_error(
       directory.write("flat.geo",

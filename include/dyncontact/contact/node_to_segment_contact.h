@@ -10,10 +10,12 @@
 namespace dyncontact
 {
 /**
- * Node-to-segment contact on Q2 faces (2D meridian plane): every slave node of body A is
- * projected onto the curved master faces of body B (Wriggers, Computational Contact Mechanics,
- * 2nd ed., ch. 4; Laursen, Computational Contact and Impact Mechanics, ch. 5), so that the meshes
- * of the two surfaces need not match.
+ * Node-to-segment contact on Q2 faces (2D: 3-node lines of the meridian or plane-strain plane;
+ * 3D: node-to-surface on 9-node quadrilaterals, the face patch FacePatch<dim>, whose parameter xi
+ * is then (xi, eta) and whose faces have nine nodes where the text below says three): every slave
+ * node of body A is projected onto the curved master faces of body B (Wriggers, Computational
+ * Contact Mechanics, 2nd ed., ch. 4; Laursen, Computational Contact and Impact Mechanics, ch. 5),
+ * so that the meshes of the two surfaces need not match.
  *
  * Candidates (reference configuration, fixed for the run): a slave node is a candidate pair if
  * some master face lies within `search_radius` [length] of it (the distance from the node to its

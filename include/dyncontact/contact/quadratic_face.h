@@ -26,6 +26,10 @@ namespace dyncontact
 template <int dim>
 struct QuadraticFace
 {
+  /** The face parameter xi. */
+  using Parameter                       = double;
+  static constexpr unsigned int n_nodes = 3;
+
   /** The support points x_0 (xi = 0), x_1 (xi = 1), x_2 (xi = 1/2), current positions. */
   std::array<Point<dim>, 3> points;
 
@@ -139,17 +143,4 @@ private:
     return sum;
   }
 };
-/**
- * Face `nodes` (three indices into `positions`, in the order of ContactSurface::face_nodes()) of a
- * surface whose nodes are at `positions`.
- */
-template <int dim>
-QuadraticFace<dim> quadratic_face(const std::vector<unsigned int>& nodes,
-                                  const std::vector<Point<dim>>& positions)
-{
-  QuadraticFace<dim> face;
-  for (unsigned int i = 0; i < 3; ++i)
-    face.points[i] = positions[nodes[i]];
-  return face;
-}
 } // namespace dyncontact

@@ -8,6 +8,7 @@
 #include <dyncontact/reference/finite_sphere_impact.h>
 #include <dyncontact/reference/hertz_impact.h>
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parsed_function.h>
 
 #include <memory>
@@ -48,10 +49,12 @@ public:
   Tensor<1, 3> initial_velocity(types::material_id body, const Point<3>& X) const override;
   /**
    * The declared pairs (Contact/Pair k): a slave surface against a rigid plane, or against a
-   * master surface of another body with matching facing nodes (Contact/discretization =
-   * node-to-node; the others are 2D only). No declared pairs: no contact. Throws InputError for a
-   * boundary id the mesh does not have and for two surfaces of one body. The penalty stiffness
-   * per unit contact area is E / h_min (E of the stiffest body, h_min the shortest cell edge).
+   * master surface of another body, node-to-node (matching facing nodes) or node-to-surface
+   * (node-to-segment, within search_radius()); mortar is 2D only. No declared pairs: no contact
+   * for one body; InputError for more (they would pass through each other).
+   * Throws InputError for a boundary id the mesh does not have and for two surfaces of one body.
+   * The penalty stiffness per unit contact area is E / h_min (E of the stiffest body, h_min the
+   * shortest cell edge).
    */
   ContactDescription<3> contact_description(const NodeIndex<3>& nodes) const override;
   /**
@@ -92,11 +95,12 @@ public:
   /**
    * Hertz's theory of a sphere dropped on a rigid plane, if the problem is one: one contact pair,
    * a spherical slave surface against a rigid plane perpendicular to z, the sphere approaching it
-   * (its initial velocity at the centre), not overlapping it; the model may be a symmetric part of
-   * the sphere, cut by symmetry planes through its centre that contain the plane's normal (a
-   * quarter on x = 0 and y = 0). Its mass: the whole sphere's rho 4/3 pi R^3 if the body's
-   * boundary is the sphere and those planes, else rho V times whole_body_factor(). Empty
-   * otherwise. Valid after create_triangulation().
+   * (its initial velocity at the centre), not overlapping it, its pole (the point nearest the
+   * plane) the body's extreme point toward the plane and on no other boundary of the body but
+   * symmetry planes; the model may be a symmetric part of the sphere, cut by symmetry planes
+   * through its centre that contain the plane's normal (a quarter on x = 0 and y = 0). Its mass:
+   * the whole sphere's rho 4/3 pi R^3 if the body's boundary is the sphere and those planes, else
+   * rho V times whole_body_factor(). Empty otherwise. Valid after create_triangulation().
    */
   std::optional<HertzImpact> hertz_reference() const;
   /**
@@ -131,6 +135,12 @@ private:
    * the round-off of the positions (as MeshModel).
    */
   double touching_tolerance() const;
+  /**
+   * Node-to-surface search radius [length] between bodies a and b: the smallest distance between
+   * a boundary vertex of a and one of b at t = 0 plus a quarter of the smallest bounding-box side
+   * of the two bodies.
+   */
+  double search_radius(unsigned int body_a, unsigned int body_b) const;
 
   MeshParameters mesh;
   BodiesParameters bodies;
@@ -142,8 +152,10 @@ private:
   unsigned int n_cells;
   double shortest_edge;
   double largest_coordinate;
-  std::vector<double> largest_cell_diameter; ///< per body
-  std::vector<Point<3>> body_centroids;      ///< per body
-  std::vector<double> body_volumes;          ///< per body, the model's [length^3]
+  std::vector<double> largest_cell_diameter;            ///< per body
+  std::vector<Point<3>> body_centroids;                 ///< per body
+  std::vector<double> body_volumes;                     ///< per body, the model's [length^3]
+  std::vector<std::vector<Point<3>>> boundary_vertices; ///< per body, at t = 0
+  std::vector<BoundingBox<3>> body_boxes;               ///< per body, of its vertices
 };
 } // namespace dyncontact
