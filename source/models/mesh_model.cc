@@ -1,4 +1,4 @@
-#include <dyncontact/models/body_materials.h>
+#include <dyncontact/models/body_properties.h>
 #include <dyncontact/models/mesh_model.h>
 #include <dyncontact/reference/impact_summary.h>
 
@@ -8,8 +8,6 @@
 #include <deal.II/grid/grid_tools.h>
 
 #include <cmath>
-#include <fstream>
-#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -112,8 +110,7 @@ void MeshModel::attach_manifolds(Triangulation<2>& triangulation) const
 
 double MeshModel::touching_tolerance() const
 {
-  return std::max(1e-9 * shortest_edge,
-                  8. * std::numeric_limits<double>::epsilon() * largest_coordinate);
+  return dyncontact::touching_tolerance(shortest_edge, largest_coordinate);
 }
 
 std::vector<BodyMaterial> MeshModel::body_materials() const
@@ -303,12 +300,7 @@ std::vector<SurfaceTraction<2>> MeshModel::surface_tractions() const
 
 std::vector<BodyForce<2>> MeshModel::body_forces() const
 {
-  std::vector<BodyForce<2>> loads;
-  for (unsigned int body = 0; body < n_bodies(); ++body)
-    if (!bodies.bodies[body].body_force.is_zero())
-      loads.push_back(
-          {static_cast<types::material_id>(body), forces[body], bodies.bodies[body].density});
-  return loads;
+  return dyncontact::body_forces(bodies, forces);
 }
 
 Tensor<1, 2> MeshModel::impact_direction() const

@@ -1,4 +1,4 @@
-#include <dyncontact/models/body_materials.h>
+#include <dyncontact/models/body_properties.h>
 #include <dyncontact/models/solid_mesh_model.h>
 #include <dyncontact/reference/impact_summary.h>
 
@@ -48,8 +48,7 @@ void SolidMeshModel::create_triangulation(Triangulation<3>& triangulation)
         " but Bodies/number of bodies = " + std::to_string(n_bodies()) + ".");
   largest_cell_diameter.assign(n_bodies(), 0.);
   boundary_vertices.assign(n_bodies(), {});
-  body_boxes.assign(n_bodies(), BoundingBox<3>());
-  std::vector<bool> boxed(n_bodies(), false);
+  std::set<unsigned int> counted_vertices;
   shortest_edge      = std::numeric_limits<double>::max();
   largest_coordinate = 0.;
   for (const auto& cell : triangulation.active_cell_iterators())
@@ -59,42 +58,37 @@ void SolidMeshModel::create_triangulation(Triangulation<3>& triangulation)
     for (unsigned int line = 0; line < cell->n_lines(); ++line)
       shortest_edge = std::min(shortest_edge, cell->line(line)->diameter());
     for (const unsigned int v : cell->vertex_indices())
-    {
       for (unsigned int d = 0; d < 3; ++d)
         largest_coordinate = std::max(largest_coordinate, std::abs(cell->vertex(v)[d]));
-      const types::material_id body = cell->material_id();
-      const BoundingBox<3> point(std::make_pair(cell->vertex(v), cell->vertex(v)));
-      if (boxed[body])
-        body_boxes[body].merge_with(point);
-      else
-        body_boxes[body] = point;
-      boxed[body] = true;
-    }
     for (const auto& face : cell->face_iterators())
       if (face->at_boundary())
         for (const unsigned int v : face->vertex_indices())
-          boundary_vertices[cell->material_id()].push_back(face->vertex(v));
+          if (counted_vertices.insert(face->vertex_index(v)).second) // each vertex once
+            boundary_vertices[cell->material_id()].push_back(face->vertex(v));
   }
+  // A body's extreme points lie on its boundary.
+  body_boxes.clear();
+  for (const std::vector<Point<3>>& vertices : boundary_vertices)
+    body_boxes.emplace_back(vertices);
   n_cells = triangulation.n_active_cells();
   // Volumes over each cell in the Q2 mapping of the manifolds (exact for straight cells).
   const MappingQ<3> mapping(2);
   const FE_Q<3> linear(1);
   FEValues<3> cell_values(
       mapping, linear, QGauss<3>(4), update_quadrature_points | update_JxW_values);
-  std::vector<double>& volumes = body_volumes;
-  volumes.assign(n_bodies(), 0.);
+  body_volumes.assign(n_bodies(), 0.);
   body_centroids.assign(n_bodies(), Point<3>());
   for (const auto& cell : triangulation.active_cell_iterators())
   {
     cell_values.reinit(cell);
     for (const unsigned int q : cell_values.quadrature_point_indices())
     {
-      volumes[cell->material_id()] += cell_values.JxW(q);
+      body_volumes[cell->material_id()] += cell_values.JxW(q);
       body_centroids[cell->material_id()] += cell_values.JxW(q) * cell_values.quadrature_point(q);
     }
   }
   for (unsigned int body = 0; body < n_bodies(); ++body)
-    body_centroids[body] /= volumes[body];
+    body_centroids[body] /= body_volumes[body];
 }
 
 void SolidMeshModel::attach_manifolds(Triangulation<3>& triangulation) const
@@ -154,8 +148,7 @@ double SolidMeshModel::search_radius(const unsigned int body_a, const unsigned i
 
 double SolidMeshModel::touching_tolerance() const
 {
-  return std::max(1e-9 * shortest_edge,
-                  8. * std::numeric_limits<double>::epsilon() * largest_coordinate);
+  return dyncontact::touching_tolerance(shortest_edge, largest_coordinate);
 }
 
 ContactDescription<3> SolidMeshModel::contact_description(const NodeIndex<3>&) const
@@ -282,12 +275,7 @@ std::vector<SurfaceTraction<3>> SolidMeshModel::surface_tractions() const
 
 std::vector<BodyForce<3>> SolidMeshModel::body_forces() const
 {
-  std::vector<BodyForce<3>> loads;
-  for (unsigned int body = 0; body < n_bodies(); ++body)
-    if (!bodies.bodies[body].body_force.is_zero())
-      loads.push_back(
-          {static_cast<types::material_id>(body), forces[body], bodies.bodies[body].density});
-  return loads;
+  return dyncontact::body_forces(bodies, forces);
 }
 
 Tensor<1, 3> SolidMeshModel::impact_direction() const

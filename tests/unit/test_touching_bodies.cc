@@ -66,12 +66,6 @@ std::vector<std::string> short_bar_1(const std::string& left_end)
           "Geometry/Bar 1/length=0.2",
           "Geometry/Bar 1/number of elements=2"};
 }
-
-std::vector<std::string> with(std::vector<std::string> overrides, const std::string& extra)
-{
-  overrides.push_back(extra);
-  return overrides;
-}
 } // namespace
 
 TEST(TouchingBodies, BarsTypedAsTouchingStartClosed)
@@ -84,7 +78,7 @@ TEST(TouchingBodies, BarsTypedAsTouchingStartClosed)
   {
     const RunParameters parameters =
         read("prm/bars_identical.prm",
-             with(short_bar_1(left_end), "Geometry/Bar 2/left end=" + touching_left_end));
+             with(short_bar_1(left_end), {"Geometry/Bar 2/left end=" + touching_left_end}));
     const std::vector<ContactPair<1>> pairs = contact_pairs(parameters);
     ASSERT_EQ(pairs.size(), 1u);
     EXPECT_EQ(pairs[0].reference_gap(), 0.) << "bar 1 from " << left_end;
@@ -93,8 +87,8 @@ TEST(TouchingBodies, BarsTypedAsTouchingStartClosed)
 
 TEST(TouchingBodies, WallTypedAsTouchingStartsClosed)
 {
-  const RunParameters parameters =
-      read("prm/bar_rigid_wall.prm", with(short_bar_1("0.1"), "Geometry/Rigid wall/position=0.3"));
+  const RunParameters parameters = read(
+      "prm/bar_rigid_wall.prm", with(short_bar_1("0.1"), {"Geometry/Rigid wall/position=0.3"}));
   const std::vector<ContactPair<1>> pairs = contact_pairs(parameters);
   ASSERT_EQ(pairs.size(), 1u);
   ASSERT_TRUE(pairs[0].against_wall());
@@ -105,20 +99,21 @@ TEST(TouchingBodies, SmallGapsBeyondTheToleranceStay)
 {
   // A gap of 1e-9 (ten times the tolerance, 1e-9 of the 0.1 elements) is a gap.
   const RunParameters parameters = read(
-      "prm/bars_identical.prm", with(short_bar_1("0.1"), "Geometry/Bar 2/left end=0.300000001"));
+      "prm/bars_identical.prm", with(short_bar_1("0.1"), {"Geometry/Bar 2/left end=0.300000001"}));
   EXPECT_NEAR(contact_pairs(parameters)[0].reference_gap(), 1e-9, 1e-15);
 }
 
 TEST(TouchingBodies, OverlapsBeyondTheToleranceAreRejectedWithTheirDigits)
 {
   const std::string bars = input_error(
-      "prm/bars_identical.prm", with(short_bar_1("0.1"), "Geometry/Bar 2/left end=0.299999999"));
+      "prm/bars_identical.prm", with(short_bar_1("0.1"), {"Geometry/Bar 2/left end=0.299999999"}));
   EXPECT_NE(bars.find("Bar 1 [0.1, 0.30000000000000004] and Bar 2 [0.299999999, "
                       "10.299999999] overlap at t = 0 by 1e-09"),
             std::string::npos)
       << bars;
-  const std::string wall = input_error(
-      "prm/bar_rigid_wall.prm", with(short_bar_1("0.1"), "Geometry/Rigid wall/position=0.2999999"));
+  const std::string wall =
+      input_error("prm/bar_rigid_wall.prm",
+                  with(short_bar_1("0.1"), {"Geometry/Rigid wall/position=0.2999999"}));
   EXPECT_NE(wall.find("position = 0.2999999 is left of the right end 0.30000000000000004 of Bar 1"),
             std::string::npos)
       << wall;

@@ -1,7 +1,9 @@
 #include <dyncontact/material/material.h>
-#include <dyncontact/models/body_materials.h>
+#include <dyncontact/models/body_properties.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace dyncontact
 {
@@ -19,5 +21,11 @@ double dilatational_wave_speed(const BodyParameters& body)
   const double nu                  = body.poissons_ratio;
   const double constrained_modulus = body.youngs_modulus * (1. - nu) / ((1. + nu) * (1. - 2. * nu));
   return std::sqrt(constrained_modulus / body.density);
+}
+
+double touching_tolerance(const double shortest_edge, const double largest_coordinate)
+{
+  return std::max(1e-9 * shortest_edge,
+                  8. * std::numeric_limits<double>::epsilon() * largest_coordinate);
 }
 } // namespace dyncontact
