@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <map>
 #include <optional>
 #include <sstream>
 
@@ -14,23 +15,90 @@ namespace
 /// |n_s - sum_i N_i n_i| (at most 2) below which a slave node does not face the master surface.
 constexpr double least_averaged_normal = 1e-8;
 
+/// The parameter distance from a master node or from a side the face shares with another face
+/// within which a pair's normal turns from the face's normal to the averaged one
+/// (project_onto_faces()).
+constexpr double edge_zone = 0.01;
+
+/**
+ * The parameter distance of xi in [0, 1] from the face's nodes (xi = 0, 1/2, 1) and from its ends
+ * that `shared` marks (the order of FaceSides), whichever is nearer; in 3D, of xi in [0, 1]^2 from
+ * its nodes (the 3 x 3 grid, maximum norm) and its shared sides.
+ */
+double node_or_kink_distance(const double xi, const std::array<bool, 2>& shared)
+{
+  const double from_node = std::min({xi, std::abs(xi - 0.5), 1. - xi});
+  return std::min({from_node, shared[0] ? xi : 1., shared[1] ? 1. - xi : 1.});
+}
+double node_or_kink_distance(const Point<2>& xi, const std::array<bool, 4>& shared)
+{
+  const auto from_nodes  = [](const double x) { return std::min({x, std::abs(x - 0.5), 1. - x}); };
+  const double from_node = std::max(from_nodes(xi[0]), from_nodes(xi[1]));
+  return std::min({from_node,
+                   shared[0] ? xi[0] : 1.,
+                   shared[1] ? 1. - xi[0] : 1.,
+                   shared[2] ? xi[1] : 1.,
+                   shared[3] ? 1. - xi[1] : 1.});
+}
+
+/**
+ * Per face of `surface`, which of its sides (FaceSides' order) it shares with another face: the
+ * sides whose corner nodes (one node in 2D, two in 3D) another face has as a side too.
+ */
+template <int dim>
+std::vector<FaceSides<dim>> shared_face_sides(const ContactSurface<dim>& surface)
+{
+  // The corner nodes of each side, in FacePatch's node order (QuadraticQuad: FE_Q<2>(2)'s unit
+  // support points, corners 0 (0, 0), 1 (1, 0), 2 (0, 1), 3 (1, 1)).
+  const std::vector<std::vector<unsigned int>> side_corners =
+      dim == 2 ? std::vector<std::vector<unsigned int>>{{0}, {1}}
+               : std::vector<std::vector<unsigned int>>{{0, 2}, {1, 3}, {0, 1}, {2, 3}};
+  const auto key = [&](const std::vector<unsigned int>& face, const unsigned int side)
+  {
+    std::vector<unsigned int> nodes;
+    for (const unsigned int corner : side_corners[side])
+      nodes.push_back(face[corner]);
+    std::sort(nodes.begin(), nodes.end());
+    return nodes;
+  };
+  std::map<std::vector<unsigned int>, unsigned int> count;
+  for (const auto& face : surface.face_nodes())
+    for (unsigned int side = 0; side < side_corners.size(); ++side)
+      ++count[key(face, side)];
+  std::vector<FaceSides<dim>> shared(surface.face_nodes().size());
+  for (unsigned int f = 0; f < shared.size(); ++f)
+    for (unsigned int side = 0; side < side_corners.size(); ++side)
+      shared[f][side] = count[key(surface.face_nodes()[f], side)] > 1;
+  return shared;
+}
+
+/** Where move_master_point() put a pair's master point: the normals there. */
+template <int dim>
+struct MasterPointNormals
+{
+  Tensor<1, dim> averaged; ///< nbar = n_s - sum_i N_i n_i, the ray's direction (not normalized)
+  Tensor<1, dim> face;     ///< the face's normal (FacePatch::normal(), not normalized)
+  unsigned int face_index; ///< the face the point is on
+  typename FacePatch<dim>::Parameter xi; ///< the point's parameter on it
+};
+
 /**
  * Moves `pair`'s master point onto `faces` of `master_surface`, its nodes at `master_positions`:
  * to where the ray from the slave node (at `slave_point`) along nbar(face, xi) = n_s - sum_i
  * N_i(xi) n_i meets a face (the nearest such point), else to the closest point of the faces; sets
- * the pair's masters (the face's nodes) and weights (N_i at the point) and returns nbar there.
- * `master_normals`: the master surface's nodal normals n_i there (update_pairs(): the averaged
- * normal of the two surfaces, n_s the slave node's normal), or null for a ray along n_s alone
- * (update_master_points(): n_s the pair's normal, kept).
+ * the pair's masters (the face's nodes) and weights (N_i at the point) and returns nbar and the
+ * face's normal there. `master_normals`: the master surface's nodal normals n_i there
+ * (update_pairs(): the averaged normal of the two surfaces, n_s the slave node's normal), or null
+ * for a ray along n_s alone (update_master_points(): n_s the pair's ray direction, kept).
  */
 template <int dim>
-Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
-                                 const std::vector<unsigned int>& faces,
-                                 const std::vector<Point<dim>>& master_positions,
-                                 const Point<dim>& slave_point,
-                                 const Tensor<1, dim>& n_s,
-                                 const std::vector<Tensor<1, dim>>* master_normals,
-                                 ContactPair<dim>& pair)
+MasterPointNormals<dim> move_master_point(const ContactSurface<dim>& master_surface,
+                                          const std::vector<unsigned int>& faces,
+                                          const std::vector<Point<dim>>& master_positions,
+                                          const Point<dim>& slave_point,
+                                          const Tensor<1, dim>& n_s,
+                                          const std::vector<Tensor<1, dim>>* master_normals,
+                                          ContactPair<dim>& pair)
 {
   using Patch           = FacePatch<dim>;
   const auto normals_of = [&](const unsigned int face)
@@ -71,7 +139,11 @@ Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
         {master_surface.nodes()[master_surface.face_nodes()[chosen_face][i]], weights[i]});
     nbar -= weights[i] * normals[i];
   }
-  return nbar;
+  return {
+      nbar,
+      face_patch<dim>(master_surface.face_nodes()[chosen_face], master_positions).normal(chosen_xi),
+      chosen_face,
+      chosen_xi};
 }
 
 /**
@@ -79,8 +151,16 @@ Tensor<1, dim> move_master_point(const ContactSurface<dim>& master_surface,
  * `master_positions`, with the slave node at `slave_point`, its normal `slave_normal` and the
  * master surface's nodal normals `master_normals` there: the master point is where the ray from the
  * slave node along the averaged normal meets a face (the nearest such point), else the closest
- * point of the faces; the normal is the averaged normal there. Throws SolverFailure if that
- * vanishes.
+ * point of the faces. The pair's ray direction is the unit averaged normal, along which the
+ * master point follows the slave within the step (update_master_points()); its normal is the
+ * face's unit normal at the point, turned to the averaged normal's side: the gap along the ray
+ * then does not change to first order as the master point slides over the face, so a sliding
+ * pair's force does no work at a closed gap (doc/method.md section 4.1). Within `edge_zone` of a
+ * master node or of a side the face shares with another face (a kink of the C0 surface, where the
+ * face normal jumps) the normal turns to the averaged one, continuously: a slave node on a kink
+ * is not pushed by one face's normal or the other's from step to step, and one on a master node
+ * (matching meshes) has node-to-node contact's normal. Throws SolverFailure if the averaged
+ * normal vanishes (the ray has no direction) or is tangent to the face.
  */
 template <int dim>
 void project_onto_faces(const ContactSurface<dim>& master_surface,
@@ -89,11 +169,14 @@ void project_onto_faces(const ContactSurface<dim>& master_surface,
                         const Point<dim>& slave_point,
                         const Tensor<1, dim>& slave_normal,
                         const std::vector<Tensor<1, dim>>& master_normals,
+                        const std::vector<FaceSides<dim>>& shared_sides,
                         ContactPair<dim>& pair)
 {
-  const Tensor<1, dim> normal = move_master_point(
+  const auto [averaged, face, face_index, xi] = move_master_point(
       master_surface, faces, master_positions, slave_point, slave_normal, &master_normals, pair);
-  if (!(normal.norm() >= least_averaged_normal)) // also for NaN
+  const double facing = averaged * face;
+  if (!(averaged.norm() >= least_averaged_normal) || // also for NaN
+      !(std::abs(facing) >= least_averaged_normal * averaged.norm() * face.norm()))
   {
     std::ostringstream where;
     where << pair.slave.position;
@@ -101,6 +184,11 @@ void project_onto_faces(const ContactSurface<dim>& master_surface,
                         " (reference position) does not face the master surface (its outward "
                         "normal equals the master surface's there).");
   }
+  pair.ray_direction = averaged / averaged.norm();
+  const double zone =
+      std::max(0., 1. - node_or_kink_distance(xi, shared_sides[face_index]) / edge_zone);
+  const Tensor<1, dim> normal = (1. - zone * zone) * (facing > 0. ? 1. : -1.) * face / face.norm() +
+                                zone * zone * pair.ray_direction;
   pair.normal = normal / normal.norm();
 }
 } // namespace
@@ -119,6 +207,7 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
     AssertThrow(face.size() == FacePatch<dim>::n_nodes,
                 ExcMessage("node-to-segment contact needs Q2 faces (three nodes a face in 2D, nine "
                            "in 3D)"));
+  shared_sides                 = shared_face_sides(this->master_surface);
   const auto undeformed_slave  = this->slave_surface.reference_positions();
   const auto undeformed_master = this->master_surface.reference_positions();
   const auto slave_areas       = this->slave_surface.lumped_areas(undeformed_slave);
@@ -146,6 +235,7 @@ NodeToSegmentContact<dim>::NodeToSegmentContact(ContactSurface<dim> slave_surfac
                          pair.slave.position,
                          slave_normals[i],
                          master_normals,
+                         shared_sides,
                          pair);
     }
     catch (const SolverFailure& failure) // at the reference configuration: the input's fault
@@ -187,6 +277,7 @@ void NodeToSegmentContact<dim>::update_pairs(const BorderDisplacement<dim>& disp
                        displacement.current_position(pairs[k].slave),
                        slave_normals[slave_node_of_pair[k]],
                        master_normals,
+                       shared_sides,
                        pairs[k]);
 }
 
@@ -210,7 +301,7 @@ void NodeToSegmentContact<dim>::update_master_points(const BorderDisplacement<di
                              candidate_faces_of_pair[k],
                              master_positions,
                              displacement.current_position(pairs[k].slave),
-                             pairs[k].normal,
+                             pairs[k].ray_direction,
                              nullptr,
                              pairs[k]);
 }

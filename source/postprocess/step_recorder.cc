@@ -91,6 +91,10 @@ std::vector<std::string> StepRecorder<dim>::columns() const
   for (unsigned int b = 1; b <= model.n_bodies(); ++b)
     for (const std::string quantity : {"momentum_", "impulse_", "u_tip_", "v_tip_", "a_tip_"})
       columns.push_back(quantity + std::to_string(b));
+  if (dim == 3)
+    for (unsigned int b = 1; b <= model.n_bodies(); ++b)
+      for (const std::string axis : {"x", "y", "z"})
+        columns.push_back("momentum_" + std::to_string(b) + "_" + axis);
   return columns;
 }
 
@@ -144,6 +148,9 @@ void StepRecorder<dim>::record(const Step& step,
     row.insert(
         row.end(),
         {measures.momenta[b], ledger.impulses[b], tips[3 * b], tips[3 * b + 1], tips[3 * b + 2]});
+  for (const Tensor<1, max_dimension>& momentum : measures.body_momenta)
+    for (unsigned int d = 0; d < max_dimension; ++d)
+      row.push_back(momentum[d]);
   rows.add_row(row);
   write_fields(rows.n_rows() - 1, step.nominal_step, step.time, state, pressures);
 }

@@ -126,10 +126,14 @@ double face_parameter(const ContactPair<2>& pair)
 //  - ContactPair::gap equals n . (x(xi) - x_s) with x(xi) evaluated here from the face's current
 //    nodes and the Lagrange quadratics written out again (1e-12: round-off of sums of ~10 terms of
 //    coordinates ~10);
-//  - the master point lies on the ray from the slave node along the pair's (averaged) normal,
-//    (x(xi) - x_s) x n = 0 relative to |x - x_s| (1e-12: Newton stops at a step of 1e-14 and
-//    converges quadratically, so xi is exact to round-off), at every pair whose point is inside
-//    a face (not at a vertex, where a fallback to the closest point may have acted);
+//  - the master point lies on the ray from the slave node along the pair's ray direction (the
+//    averaged normal), (x(xi) - x_s) x n = 0 relative to |x - x_s| (1e-12: Newton stops at a step
+//    of 1e-14 and converges quadratically, so xi is exact to round-off), at every pair whose
+//    point is inside a face (not at a vertex, where a fallback to the closest point may have
+//    acted);
+//  - the pair's normal is the face's, n . x'(xi) = 0 relative to |x'| (1e-12: round-off), at
+//    every pair whose point is 0.01 or more (in xi) from the face's nodes, where the normal turns
+//    to the averaged one (at least half of them);
 //  - the gap's rows c_j n against central finite differences of the frozen pair's gap (1e-9: the
 //    frozen gap is linear in u, so the difference quotient is exact up to round-off over h = 1e-4).
 TEST(NodeToSegmentContact, GapIsTheDistanceAlongTheNormalToTheCurvedFace)
@@ -138,7 +142,7 @@ TEST(NodeToSegmentContact, GapIsTheDistanceAlongTheNormalToTheCurvedFace)
   const NodeToSegmentContact<2> contact = spheres.node_to_segment(0.5);
   const Vector<double> displacement     = spheres.translation_of_body_2(Tensor<1, 2>({0.1, -0.02}));
   const auto pairs                      = moved_to(contact, displacement);
-  unsigned int inside_a_face            = 0;
+  unsigned int inside_a_face = 0, off_the_nodes = 0;
   for (const ContactPair<2>& pair : pairs)
   {
     ASSERT_EQ(pair.masters.size(), 3u);
@@ -156,9 +160,19 @@ TEST(NodeToSegmentContact, GapIsTheDistanceAlongTheNormalToTheCurvedFace)
     if (xi > 0. && xi < 1.)
     {
       ++inside_a_face;
-      EXPECT_LE(std::abs(offset[0] * pair.normal[1] - offset[1] * pair.normal[0]),
-                1e-12 * offset.norm())
+      const Tensor<1, 2>& ray = pair.ray_direction;
+      EXPECT_LE(std::abs(offset[0] * ray[1] - offset[1] * ray[0]), 1e-12 * offset.norm())
           << pair.slave.position;
+    }
+    // Away from the face's nodes the normal is the face's: normal to its tangent x'(xi).
+    if (std::min({xi, std::abs(xi - 0.5), 1. - xi}) >= 0.01)
+    {
+      ++off_the_nodes;
+      Tensor<1, 2> tangent;
+      const std::array<double, 3> slope{{4. * xi - 3., 4. * xi - 1., 4. - 8. * xi}};
+      for (unsigned int i = 0; i < 3; ++i)
+        tangent += slope[i] * (current_position(pair.masters[i].node, displacement) - Point<2>());
+      EXPECT_LE(std::abs(pair.normal * tangent), 1e-12 * tangent.norm()) << pair.slave.position;
     }
 
     const double h = 1e-4;
@@ -176,6 +190,7 @@ TEST(NodeToSegmentContact, GapIsTheDistanceAlongTheNormalToTheCurvedFace)
         });
   }
   EXPECT_GE(inside_a_face, pairs.size() / 2);
+  EXPECT_GE(off_the_nodes, pairs.size() / 2);
 }
 
 // One face whose three nodes lie on a circle of radius R = 8 about the origin, at angles -alpha,

@@ -132,7 +132,11 @@ namespace dyncontact::testing
 // the smallest cell (3e-17) while the gaps of positions of size 8 carry round-off of 1e-15: every
 // step was cut to the smallest size and the run stopped (exit 3). The gap tolerance now has the
 // round-off floor of the forces (1e3 eps of the length scale): the run completes and agrees with
-// the default tolerance's to the latter's convergence (1e-10 relative force residual).
+// the default tolerance's to the latter's convergence: Newton converges linearly where slave nodes
+// slide (the tangent leaves out the moving master points and, since the pair normals are the master
+// faces', the turn of the face normal along the ray), and stops at 1e-10 of the force scale with
+// the largest force sample 1.6e-8 of itself from the converged one (measured; at 1e-12 1.1e-10,
+// at 1e-14 and 1e-16 the same to all digits), so 5e-8.
 TEST(NonMatchingImpact, TightestNewtonToleranceCompletesWithTheSameAnswer)
 {
   auto overrides = non_matching("taylor-papadopoulos");
@@ -142,7 +146,7 @@ TEST(NonMatchingImpact, TightestNewtonToleranceCompletesWithTheSameAnswer)
   const double tight_peak   = peak_force(tight.history());
   std::cout << "peak at tolerance 1e-16: " << tight_peak << ", at 1e-10: " << default_peak << "\n";
   EXPECT_EQ(tight.history().n_rows(), modified_run().history().n_rows());
-  EXPECT_NEAR(tight_peak, default_peak, 1e-9 * default_peak);
+  EXPECT_NEAR(tight_peak, default_peak, 5e-8 * default_peak);
 }
 } // namespace dyncontact::testing
 

@@ -60,6 +60,12 @@ struct ContactPair
   Point<dim> wall_point;
   Tensor<1, dim> normal;
   double penalty_stiffness; ///< used by the penalty formulation only
+  /**
+   * Node-to-segment pairs only: the unit averaged normal of the two surfaces at the projection
+   * (NodeToSegmentContact), along which the master point follows the slave node within a step;
+   * `normal` is the master face's normal there.
+   */
+  Tensor<1, dim> ray_direction;
 
   bool against_wall() const { return masters.empty(); }
 

@@ -5,6 +5,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <array>
 #include <vector>
 
 namespace dyncontact
@@ -25,6 +26,13 @@ struct FacePatchOf<3>
 /** QuadraticFace<2> in 2D, QuadraticQuad in 3D. */
 template <int dim>
 using FacePatch = typename FacePatchOf<dim>::type;
+
+/**
+ * One flag per side of a face patch: its ends xi = 0, 1 in 2D, its sides xi = 0, xi = 1, eta = 0,
+ * eta = 1 in 3D.
+ */
+template <int dim>
+using FaceSides = std::array<bool, 2 * (dim - 1)>;
 
 /**
  * Face `nodes` (FacePatch<dim>::n_nodes indices into `positions`, in the order of

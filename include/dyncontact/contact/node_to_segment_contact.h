@@ -4,6 +4,7 @@
 #include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact/contact_pair.h>
 #include <dyncontact/contact/contact_surface.h>
+#include <dyncontact/contact/face_patch.h>
 
 #include <vector>
 
@@ -131,6 +132,8 @@ private:
   std::vector<unsigned int> slave_node_of_pair;
   /** Per pair: its candidate faces, indices into master_surface.face_nodes(). */
   std::vector<std::vector<unsigned int>> candidate_faces_of_pair;
+  /// per master face, the sides it shares with another master face (project_onto_faces())
+  std::vector<FaceSides<dim>> shared_sides;
   std::vector<ContactPair<dim>> candidate_pairs;
 };
 } // namespace dyncontact

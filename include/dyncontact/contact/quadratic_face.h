@@ -54,6 +54,20 @@ struct QuadraticFace
     return combination(shape_derivatives(xi)) - Point<dim>();
   }
 
+  /**
+   * The normal of a face of a 2D mesh at xi: the tangent x'(xi) turned by -90 degrees (not
+   * normalized; length per unit xi).
+   */
+  Tensor<1, dim> normal(const double xi) const
+  {
+    static_assert(dim == 2, "a line in 3D has no normal");
+    const Tensor<1, dim> t = tangent(xi);
+    Tensor<1, dim> n;
+    n[0] = t[1];
+    n[1] = -t[0];
+    return n;
+  }
+
   /** A closest point of the face to a point: its parameter, position and distance. */
   struct Projection
   {

@@ -46,6 +46,13 @@ struct QuadraticQuad
   /** x(p). */
   Point<3> point(const Parameter& p) const { return combination(shape_values(p)); }
 
+  /** The normal x_,xi x x_,eta at p (not normalized; area per unit parameter area). */
+  Tensor<1, 3> normal(const Parameter& p) const
+  {
+    const Derivatives d = derivatives(p);
+    return cross_product_3d(d.first[0], d.first[1]);
+  }
+
   /** A closest point of the face to a point: its parameter, position and distance. */
   struct Projection
   {

@@ -33,6 +33,8 @@ struct Measures
   /// of all bodies about their common centre of mass, sum of m (x - x_c) x v over the nodes at
   /// their current positions x [mass length^2/time]; 3D only (zero otherwise)
   Tensor<1, max_dimension> angular_momentum;
+  /// per body, its momentum's components x, y, z [mass length/time]; 3D only (empty otherwise)
+  std::vector<Tensor<1, max_dimension>> body_momenta;
 };
 
 /**
@@ -77,7 +79,10 @@ private:
   /// this rank's nodes (NodeIndex::nodes()): those whose DoFs it owns carry the momenta
   const std::vector<Node<dim>>& nodes;
 
-  /** Measures::momentum and, in 3D, angular_momentum of `state`. Collective. */
+  /**
+   * Measures::momentum and, in 3D, angular_momentum and body_momenta (one per entry of
+   * Measures::momenta, which must be measured before) of `state`. Collective.
+   */
   void measure_momentum(const StepState& state, Measures& measures) const;
 };
 } // namespace dyncontact
