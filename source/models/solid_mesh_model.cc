@@ -6,10 +6,12 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
 #include <sstream>
+#include <utility>
 
 namespace dyncontact
 {
@@ -287,7 +289,23 @@ Tensor<1, 3> SolidMeshModel::impact_direction() const
 
 double SolidMeshModel::whole_body_factor() const
 {
-  return std::pow(2., boundary.symmetry_planes.size());
+  // Each symmetry plane is x_d = c for an axis d (fixed_boundaries() refuses others); the same d
+  // and c to 1e-6 of the shortest edge is the same plane.
+  std::vector<std::pair<unsigned int, double>> planes;
+  for (const SymmetryParameters& symmetry : boundary.symmetry_planes)
+  {
+    const SurfacePlane& plane = *find_surface(symmetry.boundary, "Boundary/Symmetry").plane;
+    unsigned int axis         = 0;
+    for (unsigned int d = 1; d < 3; ++d)
+      if (std::abs(plane.normal[d]) > std::abs(plane.normal[axis]))
+        axis = d;
+    const double offset = plane.point[axis];
+    const auto same     = [&](const std::pair<unsigned int, double>& other)
+    { return other.first == axis && std::abs(other.second - offset) <= 1e-6 * shortest_edge; };
+    if (std::none_of(planes.begin(), planes.end(), same))
+      planes.emplace_back(axis, offset);
+  }
+  return std::pow(2., planes.size());
 }
 
 std::optional<SolidMeshModel::SphereOnPlane> SolidMeshModel::sphere_on_plane() const

@@ -109,9 +109,10 @@ public:
    */
   std::optional<FiniteSphereImpact> finite_sphere_reference() const;
   /**
-   * How many copies of the model make the whole body: 2 per symmetry plane (4 for a quarter),
-   * the factor by which impact_summary.csv scales the model's force and impulse. The history's
-   * columns are the model's.
+   * How many copies of the model make the whole body: 2 per distinct symmetry plane (4 for a
+   * quarter; boundaries of several bodies on one plane, as the two half balls of
+   * prm/oblique_spheres_3d.prm on y = 0, count once), the factor by which impact_summary.csv
+   * scales the model's force and impulse. The history's columns are the model's.
    */
   double whole_body_factor() const;
   void print_summary(std::ostream& out, double time_step) const override;
