@@ -38,6 +38,8 @@ run central --set "Mesh/geo parameters=Angle: 0, Gap: 0.01, $meshes" \
 
 /usr/bin/python3 - "$results" <<'PY'
 import csv, math, pathlib, re, sys
+sys.path.insert(0, "bench")
+from results_table import write_table
 root = pathlib.Path(sys.argv[1])
 # The prm's balls: R = 8, E = 5e3, nu = 0.3, rho = 0.001; Hertz for two equal spheres at the
 # normal approach speed cos 30: E* = E / (2 (1 - nu^2)), R* = R / 2, m* = m / 2.
@@ -92,13 +94,5 @@ for name, angle in (("oblique", 30.), ("central", 0.)):
     row["peak_force_vs_hertz"] = f"{peak / hertz_peak - 1.:+.2%}"
     row["duration_vs_hertz"] = f"{duration / hertz_duration - 1.:+.2%}"
     rows.append(row)
-columns = list(rows[0].keys())
-with open(root.parent / "oblique_spheres_3d.csv", "w", newline="") as out:
-    writer = csv.DictWriter(out, fieldnames=columns)
-    writer.writeheader()
-    writer.writerows(rows)
-print("| " + " | ".join(columns) + " |")
-print("|" + "---|" * len(columns))
-for row in rows:
-    print("| " + " | ".join(row[c] for c in columns) + " |")
+write_table(rows, root.parent / "oblique_spheres_3d.csv")
 PY

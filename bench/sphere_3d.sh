@@ -39,6 +39,8 @@ fi
 
 /usr/bin/python3 - "$results" <<'PY'
 import csv, pathlib, re, sys
+sys.path.insert(0, "bench")
+from results_table import write_table
 root = pathlib.Path(sys.argv[1])
 def summary(name):
     path = root / name / "impact_summary.csv"
@@ -64,13 +66,5 @@ for name in runs:
             axisymmetric = float(reference[quantity]["computed"])
             row[f"{quantity}_vs_axisymmetric_r2"] = f"{computed / axisymmetric - 1:+.3%}"
     rows.append(row)
-columns = list(rows[0].keys())
-with open(root.parent / "sphere_3d.csv", "w", newline="") as out:
-    writer = csv.DictWriter(out, fieldnames=columns)
-    writer.writeheader()
-    writer.writerows(rows)
-print("| " + " | ".join(columns) + " |")
-print("|" + "---|" * len(columns))
-for row in rows:
-    print("| " + " | ".join(row[c] for c in columns) + " |")
+write_table(rows, root.parent / "sphere_3d.csv")
 PY
