@@ -193,6 +193,16 @@ TEST(NodeToSegmentContact, GapIsTheDistanceAlongTheNormalToTheCurvedFace)
   EXPECT_GE(off_the_nodes, pairs.size() / 2);
 }
 
+// The face through (0, 0), (1, 1) and (0.5, 0.25) is the parabola y = x^2, x = xi: its normal, the
+// tangent (1, 2 xi) turned by -90 degrees, is (2 xi, -1) exactly (1e-14: round-off).
+TEST(QuadraticFace, NormalIsTheTangentTurned)
+{
+  const QuadraticFace<2> face{{{Point<2>(0., 0.), Point<2>(1., 1.), Point<2>(0.5, 0.25)}}};
+  const Tensor<1, 2> normal = face.normal(0.3);
+  EXPECT_NEAR(normal[0], 0.6, 1e-14);
+  EXPECT_NEAR(normal[1], -1., 1e-14);
+}
+
 // One face whose three nodes lie on a circle of radius R = 8 about the origin, at angles -alpha,
 // alpha and 0 (xi = 0, 1, 1/2), and slave points on the concentric circle R + d, d = 0.3, at
 // angles inside the face. The quadratic interpolates x(phi(xi)), phi = alpha (2 xi - 1), whose

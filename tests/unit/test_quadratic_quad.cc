@@ -86,4 +86,14 @@ TEST(QuadraticQuad, RayPointIsWhereTheRayMeetsTheFace)
   EXPECT_NEAR((*hit)[1], 0.6, 1e-12);
   EXPECT_FALSE(face.ray_point(Point<3>(1.3, 0.6, 5.), down, no_normals, {0.5, 0.5}).has_value());
 }
+
+// The face's normal x_xi x x_eta at (0.3, 0.6) is (-(2 xi + eta), -xi, 1) = (-1.2, -0.3, 1)
+// exactly: the patch is the biquadratic surface itself (1e-14: round-off of 9-term sums).
+TEST(QuadraticQuad, NormalIsTheCrossProductOfTheTangents)
+{
+  const Tensor<1, 3> normal = patch().normal({0.3, 0.6});
+  EXPECT_NEAR(normal[0], -1.2, 1e-14);
+  EXPECT_NEAR(normal[1], -0.3, 1e-14);
+  EXPECT_NEAR(normal[2], 1., 1e-14);
+}
 } // namespace dyncontact::testing
