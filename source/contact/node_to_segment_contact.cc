@@ -20,21 +20,24 @@ constexpr double least_averaged_normal = 1e-8;
 /// (project_onto_faces()).
 constexpr double edge_zone = 0.01;
 
-/**
- * The parameter distance of xi in [0, 1] from the face's nodes (xi = 0, 1/2, 1) and from its ends
- * that `shared` marks (the order of FaceSides), whichever is nearer; in 3D, of xi in [0, 1]^2 from
- * its nodes (the 3 x 3 grid, maximum norm) and its shared sides.
- */
-double node_or_kink_distance(const double xi, const std::array<bool, 2>& shared)
+/** The distance of x in [0, 1] from the nearest of 0, 1/2 and 1 (a Q2 face's nodes along x). */
+double node_distance(const double x)
 {
-  const double from_node = std::min({xi, std::abs(xi - 0.5), 1. - xi});
-  return std::min({from_node, shared[0] ? xi : 1., shared[1] ? 1. - xi : 1.});
+  return std::min({x, std::abs(x - 0.5), 1. - x});
+}
+
+/**
+ * The parameter distance of xi from the face's nodes and from its sides that `shared` marks (the
+ * order of FaceSides), whichever is nearer: in 2D the nodes alone (a face's ends are nodes); in
+ * 3D the 3 x 3 grid of nodes (maximum norm) and the shared sides.
+ */
+double node_or_kink_distance(const double xi, const std::array<bool, 2>& /*ends: nodes*/)
+{
+  return node_distance(xi);
 }
 double node_or_kink_distance(const Point<2>& xi, const std::array<bool, 4>& shared)
 {
-  const auto from_nodes  = [](const double x) { return std::min({x, std::abs(x - 0.5), 1. - x}); };
-  const double from_node = std::max(from_nodes(xi[0]), from_nodes(xi[1]));
-  return std::min({from_node,
+  return std::min({std::max(node_distance(xi[0]), node_distance(xi[1])),
                    shared[0] ? xi[0] : 1.,
                    shared[1] ? 1. - xi[0] : 1.,
                    shared[2] ? xi[1] : 1.,
@@ -72,13 +75,12 @@ std::vector<FaceSides<dim>> shared_face_sides(const ContactSurface<dim>& surface
   return shared;
 }
 
-/** Where move_master_point() put a pair's master point: the normals there. */
+/** Where move_master_point() put a pair's master point. */
 template <int dim>
-struct MasterPointNormals
+struct MasterPoint
 {
   Tensor<1, dim> averaged; ///< nbar = n_s - sum_i N_i n_i, the ray's direction (not normalized)
-  Tensor<1, dim> face;     ///< the face's normal (FacePatch::normal(), not normalized)
-  unsigned int face_index; ///< the face the point is on
+  unsigned int face;       ///< the face the point is on
   typename FacePatch<dim>::Parameter xi; ///< the point's parameter on it
 };
 
@@ -86,19 +88,19 @@ struct MasterPointNormals
  * Moves `pair`'s master point onto `faces` of `master_surface`, its nodes at `master_positions`:
  * to where the ray from the slave node (at `slave_point`) along nbar(face, xi) = n_s - sum_i
  * N_i(xi) n_i meets a face (the nearest such point), else to the closest point of the faces; sets
- * the pair's masters (the face's nodes) and weights (N_i at the point) and returns nbar and the
- * face's normal there. `master_normals`: the master surface's nodal normals n_i there
+ * the pair's masters (the face's nodes) and weights (N_i at the point) and returns nbar, the face
+ * and the point's parameter. `master_normals`: the master surface's nodal normals n_i there
  * (update_pairs(): the averaged normal of the two surfaces, n_s the slave node's normal), or null
  * for a ray along n_s alone (update_master_points(): n_s the pair's ray direction, kept).
  */
 template <int dim>
-MasterPointNormals<dim> move_master_point(const ContactSurface<dim>& master_surface,
-                                          const std::vector<unsigned int>& faces,
-                                          const std::vector<Point<dim>>& master_positions,
-                                          const Point<dim>& slave_point,
-                                          const Tensor<1, dim>& n_s,
-                                          const std::vector<Tensor<1, dim>>* master_normals,
-                                          ContactPair<dim>& pair)
+MasterPoint<dim> move_master_point(const ContactSurface<dim>& master_surface,
+                                   const std::vector<unsigned int>& faces,
+                                   const std::vector<Point<dim>>& master_positions,
+                                   const Point<dim>& slave_point,
+                                   const Tensor<1, dim>& n_s,
+                                   const std::vector<Tensor<1, dim>>* master_normals,
+                                   ContactPair<dim>& pair)
 {
   using Patch           = FacePatch<dim>;
   const auto normals_of = [&](const unsigned int face)
@@ -139,11 +141,7 @@ MasterPointNormals<dim> move_master_point(const ContactSurface<dim>& master_surf
         {master_surface.nodes()[master_surface.face_nodes()[chosen_face][i]], weights[i]});
     nbar -= weights[i] * normals[i];
   }
-  return {
-      nbar,
-      face_patch<dim>(master_surface.face_nodes()[chosen_face], master_positions).normal(chosen_xi),
-      chosen_face,
-      chosen_xi};
+  return {nbar, chosen_face, chosen_xi};
 }
 
 /**
@@ -172,8 +170,10 @@ void project_onto_faces(const ContactSurface<dim>& master_surface,
                         const std::vector<FaceSides<dim>>& shared_sides,
                         ContactPair<dim>& pair)
 {
-  const auto [averaged, face, face_index, xi] = move_master_point(
+  const auto [averaged, face_index, xi] = move_master_point(
       master_surface, faces, master_positions, slave_point, slave_normal, &master_normals, pair);
+  const Tensor<1, dim> face =
+      face_patch<dim>(master_surface.face_nodes()[face_index], master_positions).normal(xi);
   const double facing = averaged * face;
   if (!(averaged.norm() >= least_averaged_normal) || // also for NaN
       !(std::abs(facing) >= least_averaged_normal * averaged.norm() * face.norm()))

@@ -289,18 +289,15 @@ Tensor<1, 3> SolidMeshModel::impact_direction() const
 
 double SolidMeshModel::whole_body_factor() const
 {
-  // Each symmetry plane is x_d = c for an axis d (fixed_boundaries() refuses others); the same d
+  // fixed_boundaries() lists the symmetry planes first, each x_d = c with its axis d; the same d
   // and c to 1e-6 of the shortest edge is the same plane.
+  const std::vector<FixedBoundary> fixed = fixed_boundaries();
   std::vector<std::pair<unsigned int, double>> planes;
-  for (const SymmetryParameters& symmetry : boundary.symmetry_planes)
+  for (unsigned int k = 0; k < boundary.symmetry_planes.size(); ++k)
   {
-    const SurfacePlane& plane = *find_surface(symmetry.boundary, "Boundary/Symmetry").plane;
-    unsigned int axis         = 0;
-    for (unsigned int d = 1; d < 3; ++d)
-      if (std::abs(plane.normal[d]) > std::abs(plane.normal[axis]))
-        axis = d;
-    const double offset = plane.point[axis];
-    const auto same     = [&](const std::pair<unsigned int, double>& other)
+    const unsigned int axis = fixed[k].components.front();
+    const double offset     = find_surface(fixed[k].boundary, "").plane->point[axis];
+    const auto same         = [&](const std::pair<unsigned int, double>& other)
     { return other.first == axis && std::abs(other.second - offset) <= 1e-6 * shortest_edge; };
     if (std::none_of(planes.begin(), planes.end(), same))
       planes.emplace_back(axis, offset);
