@@ -88,12 +88,13 @@ void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement
 }
 
 template <int dim>
-void ContactConstraints<dim>::update_master_points(const Vector<double>& displacement)
+void ContactConstraints<dim>::update_master_points(const Vector<double>& displacement,
+                                                   const bool move_normals)
 {
   if (geometry == nullptr)
     return;
-  geometry->update_master_points(BorderDisplacement<dim>{contact_border, displacement},
-                                 volume_pairs);
+  geometry->update_master_points(
+      BorderDisplacement<dim>{contact_border, displacement}, volume_pairs, move_normals);
   move_pairs_to_border();
 }
 

@@ -46,11 +46,19 @@ void ContactGeometrySet<dim>::update_pairs(const BorderDisplacement<dim>& displa
 
 template <int dim>
 void ContactGeometrySet<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
-                                                   std::vector<ContactPair<dim>>& pairs) const
+                                                   std::vector<ContactPair<dim>>& pairs,
+                                                   const bool move_normals) const
 {
   update_members(pairs,
                  [&](const ContactGeometry<dim>& member, std::vector<ContactPair<dim>>& own)
-                 { member.update_master_points(displacement, own); });
+                 { member.update_master_points(displacement, own, move_normals); });
+}
+
+template <int dim>
+bool ContactGeometrySet<dim>::moves_normals() const
+{
+  return std::any_of(
+      members.begin(), members.end(), [](const auto& member) { return member->moves_normals(); });
 }
 
 template <int dim>

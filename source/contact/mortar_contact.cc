@@ -290,7 +290,8 @@ void MortarContact<dim>::update_pairs(const BorderDisplacement<dim>& displacemen
 
 template <int dim>
 void MortarContact<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
-                                              std::vector<ContactPair<dim>>& pairs) const
+                                              std::vector<ContactPair<dim>>& pairs,
+                                              const bool move_normals) const
 {
   // The mortar rows first: the projection is needed only where they are not defined.
   std::vector<bool> projected =
@@ -298,7 +299,7 @@ void MortarContact<dim>::update_master_points(const BorderDisplacement<dim>& dis
                            master_surface().current_positions(displacement),
                            pairs);
   projected.flip();
-  point_projection.update_master_points(displacement, pairs, projected);
+  point_projection.update_master_points(displacement, pairs, move_normals, projected);
 }
 
 template <int dim>

@@ -145,6 +145,26 @@ MasterPoint<dim> move_master_point(const ContactSurface<dim>& master_surface,
 }
 
 /**
+ * The unit normal of a pair whose master point is at `xi` on a face with normal `face` (any
+ * length, either sign) and shared sides `shared`: the face's unit normal on the side of
+ * `ray_direction` (the unit averaged normal), turned to `ray_direction` within `edge_zone` of a
+ * master node or of a shared side, continuously: w = (1 - d / edge_zone)^2 of the ray direction,
+ * d = node_or_kink_distance().
+ */
+template <int dim>
+Tensor<1, dim> pair_normal(const Tensor<1, dim>& face,
+                           const typename FacePatch<dim>::Parameter& xi,
+                           const FaceSides<dim>& shared,
+                           const Tensor<1, dim>& ray_direction)
+{
+  const double zone = std::max(0., 1. - node_or_kink_distance(xi, shared) / edge_zone);
+  const Tensor<1, dim> normal =
+      (1. - zone * zone) * (face * ray_direction >= 0. ? 1. : -1.) * face / face.norm() +
+      zone * zone * ray_direction;
+  return normal / normal.norm();
+}
+
+/**
  * Sets `pair`'s masters, weights and normal from `faces` of `master_surface`, its nodes at
  * `master_positions`, with the slave node at `slave_point`, its normal `slave_normal` and the
  * master surface's nodal normals `master_normals` there: the master point is where the ray from the
@@ -185,11 +205,7 @@ void project_onto_faces(const ContactSurface<dim>& master_surface,
                         "normal equals the master surface's there).");
   }
   pair.ray_direction = averaged / averaged.norm();
-  const double zone =
-      std::max(0., 1. - node_or_kink_distance(xi, shared_sides[face_index]) / edge_zone);
-  const Tensor<1, dim> normal = (1. - zone * zone) * (facing > 0. ? 1. : -1.) * face / face.norm() +
-                                zone * zone * pair.ray_direction;
-  pair.normal = normal / normal.norm();
+  pair.normal        = pair_normal(face, xi, shared_sides[face_index], pair.ray_direction);
 }
 } // namespace
 
@@ -283,27 +299,38 @@ void NodeToSegmentContact<dim>::update_pairs(const BorderDisplacement<dim>& disp
 
 template <int dim>
 void NodeToSegmentContact<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
-                                                     std::vector<ContactPair<dim>>& pairs) const
+                                                     std::vector<ContactPair<dim>>& pairs,
+                                                     const bool move_normals) const
 {
-  update_master_points(displacement, pairs, std::vector<bool>(pairs.size(), true));
+  update_master_points(displacement, pairs, move_normals, std::vector<bool>(pairs.size(), true));
 }
 
 template <int dim>
 void NodeToSegmentContact<dim>::update_master_points(const BorderDisplacement<dim>& displacement,
                                                      std::vector<ContactPair<dim>>& pairs,
+                                                     const bool move_normals,
                                                      const std::vector<bool>& selected) const
 {
   AssertDimension(selected.size(), pairs.size());
   const auto master_positions = master_surface.current_positions(displacement);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     if (selected[k])
-      move_master_point<dim>(master_surface,
-                             candidate_faces_of_pair[k],
-                             master_positions,
-                             displacement.current_position(pairs[k].slave),
-                             pairs[k].ray_direction,
-                             nullptr,
-                             pairs[k]);
+    {
+      const auto [averaged, face, xi] =
+          move_master_point<dim>(master_surface,
+                                 candidate_faces_of_pair[k],
+                                 master_positions,
+                                 displacement.current_position(pairs[k].slave),
+                                 pairs[k].ray_direction,
+                                 nullptr,
+                                 pairs[k]);
+      if (move_normals)
+        pairs[k].normal = pair_normal(
+            face_patch<dim>(master_surface.face_nodes()[face], master_positions).normal(xi),
+            xi,
+            shared_sides[face],
+            pairs[k].ray_direction);
+    }
 }
 
 template <int dim>

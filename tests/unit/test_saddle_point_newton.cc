@@ -101,7 +101,7 @@ struct TwoSprings
     Tensor<1, 1> normal; // from A toward B
     normal[0] = 1.;
     contact   = std::make_unique<ContactConstraints<1>>(
-        std::vector<ContactPair<1>>{{node_a, {{node_b, 1.}}, Point<1>(), normal, 1.}},
+        std::vector<ContactPair<1>>{{node_a, {{node_b, 1.}}, Point<1>(), normal, 1., {}}},
         ContactFormulation::lagrange_multiplier);
     solver = std::make_unique<ContactNewtonSolver<1>>(
         dof_handler,

@@ -311,14 +311,14 @@ largest_relative_change(const History& history, const std::string& column, const
 // strikes ball 1 at speed 1 along -z, the line of centres 30 degrees from z, frictionless
 // node-to-surface contact with the paper's rate constraints.
 // - The momentum's x and z components (no support acts along them; the symmetry plane y = 0
-//   takes y) stay constant to 1e-10 of the initial m v / 2 (measured 2.1e-16 and 4.5e-13).
+//   takes y) stay constant to 1e-10 of the initial m v / 2 (measured 9.1e-14 and 5.0e-13).
 // - After the correction every active pair's normal velocity jump is below 1e-10 of the impact
-//   speed and its acceleration jump below 1e-10 of v / dt = 400 (measured 8.7e-15 and 1.8e-14 v /
+//   speed and its acceleration jump below 1e-10 of v / dt = 400 (measured 1.4e-14 and 2.8e-14 v /
 //   dt).
 // - The recovered contact forces on the two balls balance along z to 1e-10 of the peak force
-//   (measured 1.5e-12).
+//   (measured 1.4e-12).
 // - The algorithmic energy never exceeds its initial value by 1e-4 of it, the energy guard's
-//   tolerance (measured: it never rises; -2.6e-4 at the end): the pair normals are the master
+//   tolerance (measured: never above it): the pair normals are the master
 //   faces' (with the averaged normals of the two surfaces, which are not normal to a face, the
 //   sliding pair did work: +3.3 % on the coarse meshes of doc/method.md section 4.1).
 // - The angular momentum about y (about the common centre of mass; the half model's other
@@ -367,5 +367,73 @@ TEST(SolidContact, ObliqueSpheresKeepMomentumAndTheRateConstraints)
   const double classical_jump = largest_magnitude(classical.history(), "velocity_jump");
   std::cout << "  with Contact/dynamics = none: velocity jump " << classical_jump << "\n";
   EXPECT_GE(classical_jump, 0.1);
+}
+} // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+namespace
+{
+/**
+ * The summed energy rise, relative to the initial algorithmic energy, over the steps that begin
+ * and end with the same nonzero number of active pairs (the pairs closing or opening within a
+ * step are the contact event guard's).
+ */
+double energy_rise_in_persistent_contact(const History& history)
+{
+  const std::vector<double> energy = history.column("algorithmic_energy");
+  const std::vector<double> active = history.column("active_constraints");
+  double rise                      = 0.;
+  for (unsigned int i = 1; i < energy.size(); ++i)
+    if (active[i - 1] > 0. && active[i] == active[i - 1])
+      rise += std::max(0., energy[i] - energy[i - 1]);
+  return rise / energy.front();
+}
+} // namespace
+
+// The kind of issue 28's first open item: a sliding node-to-segment pair whose normal was held at
+// u_n over the step did the work lambda (n_n . x_,xi) dxi while the loaded face turned, an O(dt)
+// energy error that rose and fell with the force (doc/method.md section 4.1, "Normals that turn
+// within the step"). The coarse oblique spheres of the test above, through the whole impact
+// (t = 0.12, the release at 0.109; 20 s a run), on the treatments without rate constraints:
+// - Mass-redistribution on the trapezoidal rule (beta = 1/4, gamma = 1/2, which conserves
+//   energy): the energy rises by at most 2e-5 of it, summed over the steps in persistent contact
+//   (measured 6.7e-6, 1.6e-5 with dt halved: the work of sliding through the 0.01 zones where
+//   the normal turns to the averaged one; held normals: 3.95e-4, and 2.1e-4 with dt halved).
+// - The product default (mass-redistribution, its own beta and gamma) and generalized-alpha run
+//   the whole impact with the default guards (held normals: both stopped by the energy guard,
+//   exit 3 at t = 0.033 and 0.049); the momentum's x and z components stay constant to 1e-10 of
+//   m v / 2 (measured 1.4e-13 and 6.6e-13; generalized-alpha 7.8e-14 and 5.3e-13).
+TEST(SlidingEnergy, ObliqueSpheresSlideWithoutEnergyGainOnEveryTreatment)
+{
+  const std::vector<std::string> coarse = {
+      "Mesh/geo parameters=Angle: 30, Gap: 0.01, N1: 3, NR1: 2, N2: 2, NR2: 2, PoleGrading: 2",
+      "Time integration/end time=0.12",
+      "Output/vtu times=",
+      "Contact/dynamics=mass-redistribution"};
+  const SolidRun trapezoidal = run_solid_case("prm/oblique_spheres_3d.prm", coarse);
+  const double rise          = energy_rise_in_persistent_contact(trapezoidal.history());
+  std::cout << "  mass-redistribution, beta = 1/4: energy rise in persistent contact " << rise
+            << "\n";
+  EXPECT_LE(rise, 2e-5);
+
+  for (const std::string integrator : {"newmark", "generalized-alpha"})
+  {
+    const SolidRun run     = run_solid_case("prm/oblique_spheres_3d.prm",
+                                        with(coarse,
+                                             {"Time integration/integrator=" + integrator,
+                                                  "Time integration/beta=",
+                                                  "Time integration/gamma="}));
+    const History& history = run.history();
+    const double momentum  = std::abs(history.column("momentum_z").front());
+    const double change_x  = largest_relative_change(history, "momentum_x", momentum);
+    const double change_z  = largest_relative_change(history, "momentum_z", momentum);
+    std::cout << "  " << integrator
+              << " (default beta, gamma): reached t = " << history.column("time").back()
+              << ", momentum x, z change " << change_x << ", " << change_z << " of m v / 2\n";
+    EXPECT_NEAR(history.column("time").back(), 0.12, 1e-12);
+    EXPECT_LE(change_x, 1e-10);
+    EXPECT_LE(change_z, 1e-10);
+  }
 }
 } // namespace dyncontact::testing

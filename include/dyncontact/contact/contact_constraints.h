@@ -72,10 +72,14 @@ public:
 
   /**
    * For pairs of a ContactGeometry: moves every pair's master point to `displacement` (a border
-   * vector), its normal kept (ContactGeometry::update_master_points(); the Newton solver calls it
-   * at every iterate). Does nothing for fixed pairs.
+   * vector), and with `move_normals` a node-to-segment pair's normal to its master face's there
+   * (ContactGeometry::update_master_points(); the Newton solver calls it at every iterate). Does
+   * nothing for fixed pairs.
    */
-  void update_master_points(const Vector<double>& displacement);
+  void update_master_points(const Vector<double>& displacement, bool move_normals);
+
+  /** Whether update_master_points() may turn normals (ContactGeometry::moves_normals()). */
+  bool moves_normals() const { return geometry != nullptr && geometry->moves_normals(); }
 
   unsigned int n_pairs() const { return pairs.size(); }
   /** The contact nodes the pairs live on. */

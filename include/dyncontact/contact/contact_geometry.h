@@ -16,10 +16,10 @@ namespace dyncontact
  * pressure a set of nodal multipliers represents. The family: NodeToNodeContact (matching
  * meshes, one facing node per slave node) and node-to-segment contact (the slave node projected
  * onto a master face). ContactConstraints enforces the pairs; it calls update_pairs() once per
- * converged configuration, so that within a time step the normals are those of u_n, and
- * update_master_points() at every Newton iterate, so that a master point that is not a material
- * point (node-to-segment) is that of the configuration the step ends in (doc/method.md, section
- * 4.1).
+ * converged configuration, so that within a time step the rays (node-to-node: the normals) are
+ * those of u_n, and update_master_points() at every Newton iterate, so that a master point that
+ * is not a material point (node-to-segment) and its face's normal are those of the configuration
+ * the step ends in (doc/method.md, section 4.1).
  *
  * The number of pairs and each pair's slave node never change; the master nodes, weights and
  * normal may (update_pairs()), within the nodes coupled_nodes() declares, from which the contact
@@ -48,16 +48,20 @@ public:
 
   /**
    * Moves the master point (master nodes and weights) of every pair of `pairs` (as given by
-   * pairs(), same order) to the configuration `displacement`, keeping the pair's normal: the point
-   * of the master surface on the line through the slave node along the normal. Called at every
-   * Newton iterate of a step, whose normals stay those of u_n. This default leaves the pairs as
-   * they are: right where the master point is a material point (node-to-node: the facing node) or
-   * fixed (a rigid plane).
+   * pairs(), same order) to the configuration `displacement`: the point of the master surface on
+   * the pair's ray through the slave node, held over the step. With `move_normals` the pair's
+   * normal turns to the master face's there too (node-to-segment); else it is kept. Called at
+   * every Newton iterate of a step. This default leaves the pairs as they are: right where the
+   * master point is a material point (node-to-node: the facing node) or fixed (a rigid plane).
    */
   virtual void update_master_points(const BorderDisplacement<dim>& /*displacement*/,
-                                    std::vector<ContactPair<dim>>& /*pairs*/) const
+                                    std::vector<ContactPair<dim>>& /*pairs*/,
+                                    bool /*move_normals*/) const
   {
   }
+
+  /** Whether update_master_points() with `move_normals` may turn a pair's normal. */
+  virtual bool moves_normals() const { return false; }
 
   /**
    * Every node the constraint row of pair `k` may couple to over the run (the slave node and

@@ -24,7 +24,10 @@ public:
   void update_pairs(const BorderDisplacement<dim>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
   void update_master_points(const BorderDisplacement<dim>& displacement,
-                            std::vector<ContactPair<dim>>& pairs) const override;
+                            std::vector<ContactPair<dim>>& pairs,
+                            bool move_normals) const override;
+  /** Whether any member's does. */
+  bool moves_normals() const override;
   std::vector<Node<dim>> coupled_nodes(unsigned int k) const override;
   std::vector<Node<dim>> surface_nodes() const override;
   std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,

@@ -81,9 +81,15 @@ public:
   void update_pairs(const BorderDisplacement<dim>& displacement,
                     std::vector<ContactPair<dim>>& pairs) const override;
 
-  /** The mortar masters and weights at `displacement`, each pair's normal kept. */
+  /**
+   * The mortar masters and weights at `displacement`, each mortar pair's normal kept; pairs
+   * without mortar rows as NodeToSegmentContact::update_master_points().
+   */
   void update_master_points(const BorderDisplacement<dim>& displacement,
-                            std::vector<ContactPair<dim>>& pairs) const override;
+                            std::vector<ContactPair<dim>>& pairs,
+                            bool move_normals) const override;
+  /** True: the pairs without mortar rows are node-to-segment pairs. */
+  bool moves_normals() const override { return true; }
 
   /**
    * The slave node, the nodes of its own candidate faces and those of the candidate faces of
