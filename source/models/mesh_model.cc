@@ -310,6 +310,13 @@ Tensor<1, 2> MeshModel::impact_direction() const
   return axial;
 }
 
+std::vector<Tensor<1, 2>> MeshModel::momentum_directions() const
+{
+  if (section == MeshSection::axisymmetric)
+    return {impact_direction()};
+  return {Point<2>::unit_vector(0), Point<2>::unit_vector(1)};
+}
+
 std::vector<ContactPairParameters> MeshModel::effective_pairs() const
 {
   if (!declared_pairs.empty() || n_bodies() != 2)

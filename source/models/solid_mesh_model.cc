@@ -282,9 +282,12 @@ std::vector<BodyForce<3>> SolidMeshModel::body_forces() const
 
 Tensor<1, 3> SolidMeshModel::impact_direction() const
 {
-  Tensor<1, 3> z;
-  z[2] = 1.;
-  return z;
+  return Point<3>::unit_vector(2);
+}
+
+std::vector<Tensor<1, 3>> SolidMeshModel::momentum_directions() const
+{
+  return {Point<3>::unit_vector(0), Point<3>::unit_vector(1), Point<3>::unit_vector(2)};
 }
 
 double SolidMeshModel::whole_body_factor() const

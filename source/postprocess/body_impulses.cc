@@ -2,6 +2,8 @@
 #include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/postprocess/body_impulses.h>
 
+#include <sstream>
+
 namespace dyncontact
 {
 namespace
@@ -30,18 +32,26 @@ BodyImpulses<dim>::BodyImpulses(const GeneralizedAlpha& integrator,
 
 template <int dim>
 void BodyImpulses<dim>::index(const std::vector<Node<dim>>& nodes,
+                              const std::vector<Tensor<1, dim>>& directions,
                               const Tensor<1, dim>& impact_direction,
                               const unsigned int n_bodies)
 {
-  this->n_bodies = n_bodies;
+  AssertThrow(!directions.empty(), ExcMessage("BodyImpulses: no momentum direction"));
+  this->n_bodies   = n_bodies;
+  this->directions = directions;
+  impact_components.clear();
+  for (const Tensor<1, dim>& direction : directions)
+    impact_components.push_back(direction * impact_direction);
+  const unsigned int n_directions = directions.size();
   dof_body.assign(mass.size(), 0);
-  dof_direction.assign(mass.size(), 0.);
+  dof_weights.assign(mass.size() * n_directions, 0.);
   is_contact_dof.assign(mass.size(), false);
   for (const auto& node : nodes)
     for (unsigned int d = 0; d < dim; ++d)
     {
-      dof_body[node.dofs[d]]      = node.body;
-      dof_direction[node.dofs[d]] = impact_direction[d];
+      dof_body[node.dofs[d]] = node.body;
+      for (unsigned int k = 0; k < n_directions; ++k)
+        dof_weights[node.dofs[d] * n_directions + k] = directions[k][d];
     }
   for (const auto& pair : contact.candidate_pairs())
     pair.for_each_node(
@@ -53,11 +63,37 @@ void BodyImpulses<dim>::index(const std::vector<Node<dim>>& nodes,
 }
 
 template <int dim>
+std::string BodyImpulses<dim>::track_name(const unsigned int t) const
+{
+  const unsigned int n_directions = directions.size();
+  std::string name                = "body " + std::to_string(t / n_directions + 1);
+  if (n_directions == 1)
+    return name;
+  const Tensor<1, dim>& direction = directions[t % n_directions];
+  for (unsigned int d = 0; d < dim; ++d)
+    if (direction[d] == 1.)
+      return name + " along " + std::string(1, "xyz"[d]);
+  std::ostringstream components;
+  components << " along (" << direction << ")";
+  return name + components.str();
+}
+
+template <int dim>
+std::vector<double> BodyImpulses<dim>::along_impact(const std::vector<double>& tracks) const
+{
+  AssertDimension(tracks.size(), n_tracks());
+  std::vector<double> per_body(n_bodies, 0.);
+  for (unsigned int t = 0; t < tracks.size(); ++t)
+    per_body[t / directions.size()] += impact_components[t % directions.size()] * tracks[t];
+  return per_body;
+}
+
+template <int dim>
 void BodyImpulses<dim>::start(const StepState& state)
 {
   accumulated.forces = forces(state, true);
-  accumulated.impulses.assign(n_bodies, 0.);
-  accumulated.contact_impulses.assign(n_bodies, 0.);
+  accumulated.impulses.assign(n_tracks(), 0.);
+  accumulated.contact_impulses.assign(n_tracks(), 0.);
   accumulated.external_work = 0.;
 }
 
@@ -91,7 +127,7 @@ typename BodyImpulses<dim>::Forces BodyImpulses<dim>::forces(const StepState& st
   // with Q(u_0) = 0, and that imbalance counts.
   const std::vector<bool> in_active_pair = active_pair_dofs();
   const bool every_dof                   = integrator.family() != IntegratorFamily::newmark;
-  Forces forces{std::vector<double>(n_bodies, 0.), std::vector<double>(n_bodies, 0.)};
+  Forces forces{std::vector<double>(n_tracks(), 0.), std::vector<double>(n_tracks(), 0.)};
   for_each_owned_row(state.external_force,
                      [&](const types::global_dof_index i, const unsigned int j)
                      {
@@ -104,9 +140,13 @@ typename BodyImpulses<dim>::Forces BodyImpulses<dim>::forces(const StepState& st
                                                 state.external_force.local_element(j);
                          force += balance;
                          if (carries_contact && !is_fixed_dof[i])
-                           forces.contact[dof_body[i]] += dof_direction[i] * balance;
+                           for_each_track(i,
+                                          [&](const unsigned int t, const double weight)
+                                          { forces.contact[t] += weight * balance; });
                        }
-                       forces.total[dof_body[i]] += dof_direction[i] * force;
+                       for_each_track(i,
+                                      [&](const unsigned int t, const double weight)
+                                      { forces.total[t] += weight * force; });
                      });
   sum_over_ranks(forces.total, state.external_force.get_mpi_communicator());
   sum_over_ranks(forces.contact, state.external_force.get_mpi_communicator());
@@ -140,26 +180,29 @@ void BodyImpulses<dim>::accumulate(const StepState& start,
   std::vector<double> impulse_sums = partial_sums_start(impulses, communicator),
                       contact_sums = partial_sums_start(contact_part, communicator),
                       work_sum     = partial_sums_start({accumulated.external_work}, communicator);
-  for_each_owned_row(state.displacement,
-                     [&](const types::global_dof_index i, const unsigned int j)
-                     {
-                       if (is_contact_dof[i])
-                       {
-                         const double correction =
-                             dof_direction[i] * mass[i] *
-                             (state.velocity.local_element(j) - start.velocity.local_element(j) -
-                              dt * ((1. - gamma) * start.acceleration.local_element(j) +
-                                    gamma * state.acceleration.local_element(j)));
-                         impulse_sums[dof_body[i]] += correction;
-                         contact_sums[dof_body[i]] += correction;
-                       }
-                       work_sum[0] += (step_load.size() > 0
-                                           ? step_load.local_element(j)
-                                           : (1. - gamma) * start.external_force.local_element(j) +
-                                                 gamma * state.external_force.local_element(j)) *
-                                      (state.displacement.local_element(j) -
-                                       start.displacement.local_element(j));
-                     });
+  for_each_owned_row(
+      state.displacement,
+      [&](const types::global_dof_index i, const unsigned int j)
+      {
+        if (is_contact_dof[i])
+        {
+          const double correction =
+              mass[i] * (state.velocity.local_element(j) - start.velocity.local_element(j) -
+                         dt * ((1. - gamma) * start.acceleration.local_element(j) +
+                               gamma * state.acceleration.local_element(j)));
+          for_each_track(i,
+                         [&](const unsigned int t, const double weight)
+                         {
+                           impulse_sums[t] += weight * correction;
+                           contact_sums[t] += weight * correction;
+                         });
+        }
+        work_sum[0] +=
+            (step_load.size() > 0 ? step_load.local_element(j)
+                                  : (1. - gamma) * start.external_force.local_element(j) +
+                                        gamma * state.external_force.local_element(j)) *
+            (state.displacement.local_element(j) - start.displacement.local_element(j));
+      });
   for (std::vector<double>* sums : {&impulse_sums, &contact_sums, &work_sum})
     sum_over_ranks(*sums, communicator);
   impulses                  = impulse_sums;
@@ -179,38 +222,50 @@ void BodyImpulses<dim>::balance_momenta(DistributedVector& increment,
   // the body along that direction changes only the inertia term (Q is invariant, W and G^T lambda
   // do not depend on it), by c t m at every DoF. Choosing t to cancel the sum makes the step's
   // momentum change equal its recovered impulse exactly; t is the residual over c M, far below the
-  // gap tolerance.
+  // gap tolerance. The directions are orthonormal, so the translations of a body's tracks do not
+  // disturb one another.
   const std::vector<bool> in_active_pair = active_pair_dofs();
-  std::vector<double> residual_sum(n_bodies, 0.), inertia_sum(n_bodies, 0.);
+  std::vector<double> residual_sum(n_tracks(), 0.), inertia_sum(n_tracks(), 0.);
   for_each_owned_row(increment,
                      [&](const types::global_dof_index i, const unsigned int j)
                      {
-                       if (is_fixed_dof[i] || dof_direction[i] == 0. || in_active_pair[i])
+                       if (is_fixed_dof[i] || in_active_pair[i])
                          return;
-                       residual_sum[dof_body[i]] += dof_direction[i] * residual.local_element(j);
-                       inertia_sum[dof_body[i]] +=
-                           c * mass[i] * dof_direction[i] * dof_direction[i];
+                       for_each_track(i,
+                                      [&](const unsigned int t, const double weight)
+                                      {
+                                        residual_sum[t] += weight * residual.local_element(j);
+                                        inertia_sum[t] += c * mass[i] * weight * weight;
+                                      });
                      });
   sum_over_ranks(residual_sum, increment.get_mpi_communicator());
   sum_over_ranks(inertia_sum, increment.get_mpi_communicator());
   for_each_owned_row(increment,
                      [&](const types::global_dof_index i, const unsigned int j)
                      {
-                       if (!is_fixed_dof[i] && dof_direction[i] != 0. &&
-                           inertia_sum[dof_body[i]] > 0.)
-                         increment.local_element(j) -= residual_sum[dof_body[i]] /
-                                                       inertia_sum[dof_body[i]] * dof_direction[i];
+                       if (is_fixed_dof[i])
+                         return;
+                       for_each_track(i,
+                                      [&](const unsigned int t, const double weight)
+                                      {
+                                        if (inertia_sum[t] > 0.)
+                                          increment.local_element(j) -=
+                                              residual_sum[t] / inertia_sum[t] * weight;
+                                      });
                      });
 }
 
 template <int dim>
 std::vector<double> BodyImpulses<dim>::momenta(const DistributedVector& velocity) const
 {
-  std::vector<double> momenta(n_bodies, 0.);
+  std::vector<double> momenta(n_tracks(), 0.);
   for_each_owned_row(velocity,
-                     [&](const types::global_dof_index i, const unsigned int j) {
-                       momenta[dof_body[i]] +=
-                           mass[i] * dof_direction[i] * velocity.local_element(j);
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       for_each_track(i,
+                                      [&](const unsigned int t, const double weight) {
+                                        momenta[t] += mass[i] * weight * velocity.local_element(j);
+                                      });
                      });
   sum_over_ranks(momenta, velocity.get_mpi_communicator());
   return momenta;

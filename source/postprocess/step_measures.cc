@@ -117,7 +117,8 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
     measures.velocity_jump     = fields.max_active_normal_jump(velocity);
     measures.acceleration_jump = fields.max_active_normal_jump(acceleration);
   }
-  measures.momenta = body_impulses.momenta(velocity);
+  measures.momentum_tracks = body_impulses.momenta(velocity);
+  measures.momenta         = body_impulses.along_impact(measures.momentum_tracks);
   if (dim == 3) // history.csv has these columns in 3D only
     measure_momentum(state, measures);
   return measures;

@@ -111,7 +111,8 @@ template <int dim>
 void StepRecorder<dim>::record(const Step& step,
                                const Measures& measures,
                                const StepState& state,
-                               const typename BodyImpulses<dim>::Ledger& ledger)
+                               const std::vector<double>& impulses,
+                               const double external_work)
 {
   std::vector<double> row = {step.time,
                              measures.contact_force,
@@ -122,7 +123,7 @@ void StepRecorder<dim>::record(const Step& step,
                              measures.strain_energy,
                              measures.kinetic_energy + measures.strain_energy,
                              measures.algorithmic_energy,
-                             ledger.external_work,
+                             external_work,
                              fields.max_penetration(state.displacement),
                              measures.force_imbalance,
                              measures.velocity_jump,
@@ -145,9 +146,8 @@ void StepRecorder<dim>::record(const Step& step,
         row.push_back(vector[d]);
   const std::vector<double> tips = monitor_motions(state);
   for (unsigned int b = 0; b < monitors.size(); ++b)
-    row.insert(
-        row.end(),
-        {measures.momenta[b], ledger.impulses[b], tips[3 * b], tips[3 * b + 1], tips[3 * b + 2]});
+    row.insert(row.end(),
+               {measures.momenta[b], impulses[b], tips[3 * b], tips[3 * b + 1], tips[3 * b + 2]});
   for (const Tensor<1, max_dimension>& momentum : measures.body_momenta)
     for (unsigned int d = 0; d < max_dimension; ++d)
       row.push_back(momentum[d]);

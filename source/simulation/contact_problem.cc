@@ -55,7 +55,8 @@ ContactProblem<dim>::ContactProblem(ProblemModel<dim>& model,
   stepper = std::make_unique<ImplicitStepper<dim>>(
       integrator, mass, d.is_fixed_dof, *d.loads, *contact, *dynamics, *solver);
   impulses = std::make_unique<BodyImpulses<dim>>(integrator, mass, d.is_fixed_dof, *contact);
-  impulses->index(d.nodes->nodes(), model.impact_direction(), model.n_bodies());
+  impulses->index(
+      d.nodes->nodes(), model.momentum_directions(), model.impact_direction(), model.n_bodies());
   measures = std::make_unique<StepMeasures<dim>>(integrator,
                                                  mass,
                                                  *d.bodies,

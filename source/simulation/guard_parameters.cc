@@ -40,9 +40,10 @@ void GuardParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry("momentum",
                     "true",
                     Patterns::Bool(),
-                    "Reject a step after which a body's momentum change (along the impact "
-                    "direction) differs from the impulse it received from the contact and the "
-                    "external forces.");
+                    "Reject a step after which a body's momentum change along a direction (x, y "
+                    "and z in 3D, x and y in plane strain, the axis in axisymmetry) differs from "
+                    "the impulse it received along it from the contact and the external forces "
+                    "and the supports.");
   prm.declare_entry("momentum tolerance",
                     "1e-6",
                     Patterns::Double(),

@@ -103,19 +103,22 @@ void Simulation<dim>::record(const Measures& measures,
                              const unsigned int cuts)
 {
   const double size = recorder->history().n_rows() == 0 ? 0. : integrator.time_step();
+  const BodyImpulses<dim>& impulses = *problem->impulses;
   recorder->record({time, size, nominal_step, linear_solves, cuts},
                    measures,
                    problem->stepper->state(),
-                   problem->impulses->ledger());
+                   impulses.along_impact(impulses.ledger().impulses),
+                   impulses.ledger().external_work);
 }
 
 template <int dim>
 void Simulation<dim>::write_summaries(const std::string& stop)
 {
-  recorder->write_summaries(stop,
-                            n_steps * parameters.time.time_step,
-                            problem->impulses->ledger().contact_impulses,
-                            log.get_stream());
+  recorder->write_summaries(
+      stop,
+      n_steps * parameters.time.time_step,
+      problem->impulses->along_impact(problem->impulses->ledger().contact_impulses),
+      log.get_stream());
 }
 
 template <int dim>
@@ -151,6 +154,13 @@ void Simulation<dim>::serialize_state(Archive& archive, StepState::Whole& step)
   archive& tangent_scales;
   if (Archive::is_loading::value)
   {
+    if (problem->impulses->ledger().impulses.size() != problem->impulses->n_tracks())
+      throw InputError("--resume: the checkpoint keeps " +
+                       std::to_string(problem->impulses->ledger().impulses.size()) +
+                       " momentum balances where this version keeps " +
+                       std::to_string(problem->impulses->n_tracks()) +
+                       " (one per body and direction): it was written by an older dyncontact; "
+                       "run the problem again from the start.");
     problem->stepper->state().assign(step);
     problem->contact->restore(contact_state);
     problem->solver->set_tangent_scales(tangent_scales);

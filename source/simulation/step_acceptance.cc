@@ -61,13 +61,17 @@ StepGuards::Figures StepAcceptance<dim>::figures(const double time, const Measur
     return integrator.algorithmic_energy(
         state.kinetic_energy, state.strain_energy, state.acceleration_energy);
   };
+  std::vector<std::string> track_names;
+  for (unsigned int t = 0; t < impulses.n_tracks(); ++t)
+    track_names.push_back(impulses.track_name(t));
   return {time,
           guarded_energy + energy_at_this_step_size(measures) - energy_at_this_step_size(accepted),
           impulses.ledger().external_work,
           measures.contact_force,
           multiplier_magnitude,
-          measures.momenta,
+          measures.momentum_tracks,
           impulses.ledger().impulses,
+          track_names,
           measures.momentum_magnitude,
           measures.kinetic_energy + measures.strain_energy};
 }

@@ -82,7 +82,7 @@ std::pair<std::string, double> StepGuards::violation(const Guard guard, const Fi
     const double difference = std::abs(change - step.impulses[b]) / scale;
     if (difference > parameters.momentum_tolerance)
     {
-      reason << "momentum guard: body " << b + 1 << " changed its momentum by " << change
+      reason << "momentum guard: " << step.track_names[b] << " changed its momentum by " << change
              << " but received an impulse of " << step.impulses[b] << ", a difference of "
              << difference << " of the momentum scale (Guards/momentum tolerance = "
              << parameters.momentum_tolerance << ")";

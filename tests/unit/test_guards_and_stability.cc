@@ -4,6 +4,7 @@
 // valid run on round-off or on its own bookkeeping.
 #include <dyncontact/models/bar_model.h>
 #include <dyncontact/models/mesh_model.h>
+#include <dyncontact/simulation/step_guards.h>
 
 #include <algorithm>
 #include <cmath>
@@ -181,5 +182,30 @@ TEST(Guards, RampedTractionRunsOnEveryIntegrator)
                 integrator.expected_error,
                 integrator.tolerance);
   }
+}
+} // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+// The momentum guard reads every momentum direction of a body (BodyImpulses' tracks): in 3D it
+// read the impact direction only, so a momentum change across it that no impulse explains passed.
+// One body along x, y and z; its x momentum changes by 1e-3 of the momentum scale (1) without an
+// impulse, 1000 times the tolerance: rejected, naming the body and the direction; with that
+// impulse accounted, accepted.
+TEST(StepGuards, MomentumGuardReadsEveryDirection)
+{
+  const GuardParameters parameters{true, 1e-4, 1e-2, true, 1e-6, true, 1e-6, 1e-4};
+  StepGuards guards(parameters, false);
+  const std::vector<std::string> names = {"body 1 along x", "body 1 along y", "body 1 along z"};
+  StepGuards::Figures step{0., 1., 0., 0., 0., {0., 0., -1.}, {0., 0., 0.}, names, 1., 1.};
+  guards.initialize(step);
+  step.time                = 0.01;
+  step.momenta             = {1e-3, 0., -1.};
+  const std::string reason = guards.check(step);
+  EXPECT_NE(reason.find("momentum guard: body 1 along x changed its momentum by 0.001"),
+            std::string::npos)
+      << reason;
+  step.impulses = {1e-3, 0., 0.};
+  EXPECT_EQ(guards.check(step), "");
 }
 } // namespace dyncontact::testing

@@ -81,6 +81,8 @@ public:
   /** Body b's `Body force` on its cells, for every body whose force is not zero. */
   std::vector<BodyForce<2>> body_forces() const override;
   Tensor<1, 2> impact_direction() const override;
+  /** Plane strain: x and y; axisymmetric: the axis (the radial momentum of a ring is zero). */
+  std::vector<Tensor<1, 2>> momentum_directions() const override;
   /**
    * Writes hertz.csv (time, contact_force, approach of Hertz's theory at `times`) if the problem
    * is a Hertz impact, see hertz_reference(), and finite_sphere.csv (the same columns) if the

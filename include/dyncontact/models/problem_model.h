@@ -96,6 +96,13 @@ public:
   virtual Tensor<1, dim> impact_direction() const = 0;
 
   /**
+   * Orthonormal unit vectors along which each body's momentum change must equal the impulse it
+   * received (the momentum guard, BodyImpulses), spanning impact_direction(). The default: the
+   * impact direction alone (an axisymmetric model's axis, a bar's x).
+   */
+  virtual std::vector<Tensor<1, dim>> momentum_directions() const { return {impact_direction()}; }
+
+  /**
    * Writes the model's independent reference solution (e.g. exact.csv) into `directory`, sampled
    * at `times`, for the given monitor nodes. The default writes nothing.
    */

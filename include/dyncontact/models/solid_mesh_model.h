@@ -75,6 +75,8 @@ public:
   std::vector<BodyForce<3>> body_forces() const override;
   /** z. */
   Tensor<1, 3> impact_direction() const override;
+  /** x, y and z. */
+  std::vector<Tensor<1, 3>> momentum_directions() const override;
   /**
    * Writes hertz.csv and, where the finite-sphere law applies, finite_sphere.csv
    * (write_impact_references()) if the problem is a sphere dropped on a rigid plane, see

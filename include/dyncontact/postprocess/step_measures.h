@@ -28,8 +28,9 @@ struct Measures
   double force_imbalance    = 0.; ///< body A's recovered force minus body B's [force]
   double velocity_jump = 0., acceleration_jump = 0.; ///< largest normal jump across active pairs
   std::vector<double> momenta;                       ///< per body, along the impact direction
-  double momentum_magnitude = 0.;                    ///< sum of |m v| over every DoF
-  Tensor<1, max_dimension> momentum; ///< of all bodies, components x, y (, z) [mass length/time]
+  std::vector<double> momentum_tracks; ///< per track of BodyImpulses (a body along a direction)
+  double momentum_magnitude = 0.;      ///< sum of |m v| over every DoF
+  Tensor<1, max_dimension> momentum;   ///< of all bodies, components x, y (, z) [mass length/time]
   /// of all bodies about their common centre of mass, sum of m (x - x_c) x v over the nodes at
   /// their current positions x [mass length^2/time]; 3D only (zero otherwise)
   Tensor<1, max_dimension> angular_momentum;

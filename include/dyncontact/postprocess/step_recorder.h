@@ -4,7 +4,6 @@
 #include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/models/problem_model.h>
-#include <dyncontact/postprocess/body_impulses.h>
 #include <dyncontact/postprocess/contact_fields.h>
 #include <dyncontact/postprocess/field_output.h>
 #include <dyncontact/postprocess/history.h>
@@ -67,19 +66,20 @@ public:
   void open();
 
   /**
-   * Appends the row of `state` (its `measures`; from `ledger` the impulses [force time] per body
-   * and the external work [energy] since t = 0) to the history, and writes the VTU frame
-   * (numbered by the row) and profiles scheduled at it. Collective.
+   * Appends the row of `state` (its `measures`; `impulses` [force time], per body along the
+   * impact direction, and the `external_work` [energy] since t = 0) to the history, and writes
+   * the VTU frame (numbered by the row) and profiles scheduled at it. Collective.
    */
   void record(const Step& step,
               const Measures& measures,
               const StepState& state,
-              const typename BodyImpulses<dim>::Ledger& ledger);
+              const std::vector<double>& impulses,
+              double external_work);
 
   /**
    * Writes the reference solution at the recorded times and the run's summary (rank 0), marked
    * with status(): `stop` says why the run ends before `end_time` (empty when it reached it).
-   * `contact_impulses` [force time] per body as BodyImpulses accumulated them.
+   * `contact_impulses` [force time] per body along the impact direction (BodyImpulses).
    */
   void write_summaries(const std::string& stop,
                        double end_time,

@@ -31,7 +31,8 @@ namespace dyncontact
  * - tensile force: the recovered total contact force (compression positive) must not be below
  *   -`tensile force tolerance` times the force scale (the largest accepted |force| and the sum of
  *   this step's |multipliers|).
- * - momentum: for every body, the momentum change along the impact direction since t = 0 must
+ * - momentum: for every body and every momentum direction (BodyImpulses: x, y and z in 3D and x,
+ *   y in plane strain; the axis in axisymmetry), the momentum change since t = 0 must
  *   equal the accumulated impulse of the contact and external forces on it (see
  *   Simulation: Newmark-weighted recovered forces plus the modified scheme's velocity-correction
  *   impulses) to `momentum tolerance` times the momentum scale (the largest momentum magnitude
@@ -50,15 +51,16 @@ public:
   /** What the guards read about one step (the state at its end). */
   struct Figures
   {
-    double time;                  ///< t_{n+1}
-    double energy;                ///< algorithmic energy at t_{n+1}
-    double external_work;         ///< work of the external forces since t = 0
-    double contact_force;         ///< recovered total contact force, compression positive
-    double multiplier_magnitude;  ///< sum of the active pairs' |force|
-    std::vector<double> momenta;  ///< per body, along the impact direction
-    std::vector<double> impulses; ///< per body, accumulated since t = 0
-    double momentum_magnitude;    ///< sum of |m v| over every DoF (zero only at rest)
-    double plain_energy;          ///< kinetic + strain energy at t_{n+1}
+    double time;                          ///< t_{n+1}
+    double energy;                        ///< algorithmic energy at t_{n+1}
+    double external_work;                 ///< work of the external forces since t = 0
+    double contact_force;                 ///< recovered total contact force, compression positive
+    double multiplier_magnitude;          ///< sum of the active pairs' |force|
+    std::vector<double> momenta;          ///< per track (BodyImpulses: a body along a direction)
+    std::vector<double> impulses;         ///< per track, accumulated since t = 0
+    std::vector<std::string> track_names; ///< per track, as the log names it (BodyImpulses)
+    double momentum_magnitude;            ///< sum of |m v| over every DoF (zero only at rest)
+    double plain_energy;                  ///< kinetic + strain energy at t_{n+1}
   };
 
   /**
