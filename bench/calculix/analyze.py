@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Reads one CalculiX run of make_deck.py (DIR/sphere.dat, DIR/deck.json, DIR/ccx.log and
 DIR/time.log if present) and writes
-  DIR/history.csv   time,contact_force (the full-ring force: 180 x the 2-degree wedge's)
+  DIR/history.csv   time,contact_force (the full-ring force: 180 x the 2-degree wedge's; for the
+                    3D deck of make_deck_3d.py the whole sphere's: 4 x the quarter's)
   DIR/summary.csv   one row: the run's figures (header below)
   DIR/history.png   the force history, zoomed on the contact (if matplotlib is there)
 and prints the summary row as one line.
@@ -12,6 +13,7 @@ Metrics (as dyncontact's measure_impact() and bench/hertz_limit.sh do):
             linearly to zero through the first (last) two positive samples, clamped to the step
             before the first (after the last) positive sample
   impulse   the trapezoid rule over all samples; a full elastic bounce gives 2 m v
+The 3D deck's summary (SUMMARY_FIELDS_3D) compares with the finite-sphere law as well as Hertz.
 Usage: analyze.py DIR [--label NAME] [--plot-window T0 T1]
 """
 import argparse
@@ -29,12 +31,20 @@ SUMMARY_FIELDS = ["label", "rho", "material", "pole_size", "zone_radius", "far_s
                   "iterations", "wall_s", "peak_rss_mb", "peak", "duration", "impulse",
                   "hertz_peak", "hertz_duration", "two_m_v", "peak_vs_hertz_pct",
                   "duration_vs_hertz_pct", "impulse_vs_2mv_pct", "contact_start", "contact_end"]
+SUMMARY_FIELDS_3D = ["label", "element", "material", "n", "nr", "pole_grading", "penalty",
+                     "launch", "contact", "slave", "pole_edge", "nodes", "elements", "slave_faces",
+                     "equations", "dt", "start_time", "end_time", "increments", "iterations",
+                     "wall_s", "peak_rss_mb", "peak", "duration", "impulse", "law_peak",
+                     "law_duration", "two_m_v", "peak_vs_law_pct", "duration_vs_law_pct",
+                     "impulse_vs_2mv_pct", "peak_vs_hertz_pct", "duration_vs_hertz_pct",
+                     "contact_start", "contact_end"]
 
 
-def read_history(dat, wedge_factor, time_offset):
+def read_history(dat, wedge_factor, time_offset, component=1, sign=-1.0):
     """(time, full-ring contact force) from the *NODE PRINT, TOTALS=ONLY blocks of RF on the plate.
-    RF is the force the supports exert on the plate; the sphere pushes the plate toward +y
-    (away from it), so the contact force is minus the y component."""
+    RF is the force the supports exert on the plate; in the axisymmetric deck the sphere pushes
+    the plate toward +y (away from it), so the contact force is minus the y component (the
+    defaults); in the 3D deck toward -z: plus the z component (component 2, sign +1)."""
     hist = {}
     lines = open(dat).read().split("\n")
     pat = re.compile(r"total force \(fx,fy,fz\) for set NPLATE and time\s+(\S+)")
@@ -44,7 +54,7 @@ def read_history(dat, wedge_factor, time_offset):
             continue
         t = float(m.group(1)) + time_offset
         vals = next(l for l in lines[i + 1:] if l.strip()).split()
-        hist[round(t, 12)] = -float(vals[1]) * wedge_factor
+        hist[round(t, 12)] = sign * float(vals[component]) * wedge_factor
     times = sorted(hist)
     return times, [hist[t] for t in times]
 
@@ -83,6 +93,9 @@ def time_figures(path):
         m = re.search(r"Maximum resident set size \(kbytes\): (\d+)", text)
         if m:
             rss = int(m.group(1)) / 1024.0
+        m = re.fullmatch(r"\s*([\d.]+)\s+(\d+)\s*", text)  # /usr/bin/time -f "%e %M"
+        if m:
+            wall, rss = float(m.group(1)), int(m.group(2)) / 1024.0
         m = re.search(r"^real\s+(\S+)", text, re.M)  # bash `time -p` fallback
         if wall is None and m:
             wall = float(m.group(1))
@@ -100,12 +113,14 @@ def plot(path, t, f, info, window):
     h = info["hertz"]
     fig, ax = plt.subplots(figsize=(7, 4.2))
     sel = [i for i, x in enumerate(t) if window[0] <= x <= window[1]]
+    element = info.get("element", "CAX8")
     ax.plot([t[i] for i in sel], [f[i] for i in sel], "o-", ms=2.5, lw=1,
-            label=f"CalculiX CAX8, pole edge {info['pole_edge']:.3g}")
+            label=f"CalculiX {element}, pole edge {info['pole_edge']:.3g}")
     # Hertz's history F(t), from the quasi-static impact ODE: m w'' = -K w^1.5.
     import math
     k = 4.0 / 3.0 * info["E"] / (1 - info["nu"] ** 2) * math.sqrt(info["R"])
-    m, w, v, tt, dt = h["mass"], 0.0, info["v"], 2.0, h["duration"] / 4000
+    t_touch = info.get("contact_time", 2.0)
+    m, w, v, tt, dt = h["mass"], 0.0, info["v"], t_touch, h["duration"] / 4000
     ht, hf = [tt], [0.0]
     while True:
         a1 = -k * max(w, 0) ** 1.5 / m
@@ -119,7 +134,8 @@ def plot(path, t, f, info, window):
     ax.plot(ht, hf, "k--", lw=1, label="Hertz")
     ax.set_xlim(*window)
     ax.set_xlabel("t")
-    ax.set_ylabel("contact force (full ring)")
+    ax.set_ylabel("contact force (whole sphere)" if "law" in info else
+                  "contact force (full ring)")
     mat = "NLGEOM (St Venant-Kirchhoff)" if info["nlgeom"] else "linear elastic"
     ax.set_title(f"sphere on rigid plane, rho = {info['rho']:g}, {mat}, dt = {info['dt']:g}, "
                  f"alpha = {info['alpha']:g}", fontsize=10)
@@ -138,7 +154,8 @@ def main():
     a = ap.parse_args()
     info = json.load(open(os.path.join(a.dir, "deck.json")))
     t, f = read_history(os.path.join(a.dir, "sphere.dat"), info["wedge_factor"],
-                        info["start_time"])
+                        info["start_time"], info.get("force_component", 1),
+                        info.get("force_sign", -1.0))
     if not t:
         sys.exit(f"analyze.py: no force history in {a.dir}/sphere.dat")
     with open(os.path.join(a.dir, "history.csv"), "w") as out:
@@ -153,8 +170,8 @@ def main():
     row = {
         "label": a.label or os.path.basename(os.path.normpath(a.dir)),
         "rho": info["rho"], "material": "nlgeom" if info["nlgeom"] else "linear",
-        "pole_size": info["pole_size"], "zone_radius": round(info["zone_radius"], 6),
-        "far_size": info["far_size"], "pole_edge": round(info["pole_edge"], 5),
+        "pole_size": info.get("pole_size"), "zone_radius": round(info.get("zone_radius", 0), 6),
+        "far_size": info.get("far_size"), "pole_edge": round(info["pole_edge"], 5),
         "nodes": info["nodes"], "elements": info["elements"], "equations": equations,
         "dt": info["dt"], "start_time": info["start_time"], "end_time": info["end_time"],
         "increments": incs, "iterations": iters,
@@ -168,13 +185,28 @@ def main():
         "impulse_vs_2mv_pct": round(100 * (impulse / h["impulse"] - 1), 3),
         "contact_start": round(start, 6), "contact_end": round(end, 6),
     }
+    fields = SUMMARY_FIELDS
+    if "law" in info:  # the 3D deck
+        law = info["law"]
+        fields = SUMMARY_FIELDS_3D
+        row.update({
+            "element": info["element"], "n": info["n"], "nr": info["nr"],
+            "pole_grading": info["pole_grading"], "penalty": info["penalty"],
+            "launch": info["launch"], "contact": info["contact"],
+            "slave": info.get("slave", "sphere"),
+            "slave_faces": info["slave_faces"],
+            "law_peak": round(law["peak"], 5), "law_duration": round(law["duration"], 6),
+            "peak_vs_law_pct": round(100 * (peak / law["peak"] - 1), 3),
+            "duration_vs_law_pct": round(100 * (duration / law["duration"] - 1), 3),
+        })
     with open(os.path.join(a.dir, "summary.csv"), "w", newline="") as out:
-        w = csv.DictWriter(out, fieldnames=SUMMARY_FIELDS)
+        w = csv.DictWriter(out, fieldnames=fields, extrasaction="ignore")
         w.writeheader()
         w.writerow(row)
-    window = a.plot_window or (1.99, 2.0 + 1.1 * h["duration"] + 0.002)
+    t_touch = info.get("contact_time", 2.0)
+    window = a.plot_window or (t_touch - 0.01, t_touch + 1.1 * h["duration"] + 0.002)
     plot(os.path.join(a.dir, "history.png"), t, f, info, window)
-    print(" ".join(f"{k}={row[k]}" for k in SUMMARY_FIELDS))
+    print(" ".join(f"{k}={row[k]}" for k in fields))
 
 
 if __name__ == "__main__":

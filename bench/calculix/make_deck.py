@@ -12,17 +12,19 @@ axis, +-1 degree); the rigid plane is one fixed C3D8 brick above the sphere whos
 covers that wedge (see README.md for why not a CAX8 plate). Its reaction force is the force on
 the 2-degree wedge: the full ring is 180 times it.
 
-Usage: make_deck.py --out DIR [options]; writes DIR/sphere.inp (the deck), DIR/sphere.msh (the
+Usage: make_deck.py [--geometry 3d] --out DIR [options]; writes DIR/sphere.inp (the deck), DIR/sphere.msh (the
 gmsh mesh) and DIR/deck.json (the parameters and the derived figures the runner needs).
+With --geometry 3d the deck is make_deck_3d.py's quarter sphere (its options follow).
 Stdlib only; needs the gmsh binary (Debian package gmsh).
 """
 import argparse
 import json
 import math
 import os
-import shutil
-import subprocess
 import sys
+
+import ccx_deck
+from ccx_deck import lines_of
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 GEO = os.path.normpath(os.path.join(HERE, "..", "..", "meshes", "sphere_graded.geo"))
@@ -32,52 +34,20 @@ R, E, NU, V = 8.0, 5e3, 0.3, 1.0
 
 def hertz(rho):
     """Hertz's sphere on a rigid plane: E* = E/(1-nu^2), R* = R, m* = m, speed V."""
-    m = rho * 4.0 / 3.0 * math.pi * R**3
-    estar = E / (1.0 - NU**2)
-    dmax = (15.0 * m * V**2 / (16.0 * estar * math.sqrt(R))) ** 0.4
-    return {
-        "mass": m,
-        "delta_max": dmax,
-        "contact_radius": math.sqrt(R * dmax),
-        "peak": 4.0 / 3.0 * estar * math.sqrt(R) * dmax**1.5,
-        "duration": 2.9432751843 * dmax / V,
-        "impulse": 2.0 * m * V,
-        "peak_pressure": 2.0 / math.pi * estar * math.sqrt(dmax / R),
-    }
+    return ccx_deck.hertz(R, E, NU, V, rho)
 
 
 def run_gmsh(msh, centre_z, pole_size, far_size, zone_radius):
-    gmsh = shutil.which("gmsh")
-    if gmsh is None:
-        sys.exit("make_deck.py: gmsh not found (apt-get install -y gmsh)")
-    cmd = [gmsh, GEO, "-2", "-order", "2", "-setnumber", "Mesh.SecondOrderIncomplete", "1",
-           "-setnumber", "R", repr(R), "-setnumber", "CentreZ", repr(centre_z),
-           "-setnumber", "PoleSide", "1", "-setnumber", "PoleSize", repr(pole_size),
-           "-setnumber", "FarSize", repr(far_size), "-setnumber", "ZoneRadius", repr(zone_radius),
-           "-format", "msh2", "-o", msh]
-    out = subprocess.run(cmd, capture_output=True, text=True)
-    if out.returncode != 0 or not os.path.exists(msh):
-        sys.exit("make_deck.py: gmsh failed:\n" + out.stdout + out.stderr)
+    ccx_deck.run_gmsh(GEO, msh, 2, {"R": R, "CentreZ": centre_z, "PoleSide": 1,
+                                    "PoleSize": pole_size, "FarSize": far_size,
+                                    "ZoneRadius": zone_radius})
 
 
 def read_msh2(path):
-    """Nodes {id: (x, y)} and the 8-node quadrilaterals [(tag, [8 node ids])] of an ASCII
-    msh 2.2 file (element type 16)."""
-    text = open(path).read()
-    lines = text.split("$Nodes")[1].split("$EndNodes")[0].split()
-    n = int(lines[0])
-    nodes = {}
-    for i in range(n):
-        k = 1 + 4 * i
-        nodes[int(lines[k])] = (float(lines[k + 1]), float(lines[k + 2]))
-    quads = []
-    for line in text.split("$Elements")[1].split("$EndElements")[0].strip().split("\n")[1:]:
-        f = [int(s) for s in line.split()]
-        if f[1] != 16:
-            continue
-        ntags = f[2]
-        quads.append(f[3 + ntags:])
-    return nodes, quads
+    """Nodes {id: (x, y)} and the 8-node quadrilaterals [[8 node ids]] of an ASCII msh 2.2 file
+    (element type 16)."""
+    nodes, elements = ccx_deck.read_msh2(path, [16], dim=2)
+    return nodes, [q for _, q in elements[16]]
 
 
 def orient(nodes, q):
@@ -92,13 +62,16 @@ def orient(nodes, q):
     return [q[0], q[3], q[2], q[1], q[7], q[6], q[5], q[4]]
 
 
-def lines_of(ids, per_line=8):
-    ids = list(ids)
-    return "\n".join(", ".join(str(i) for i in ids[k:k + per_line]) + ","
-                     for k in range(0, len(ids), per_line))
-
-
 def main():
+    # --geometry 3d: the quarter sphere of prm/sphere_on_rigid_plane_3d.prm (make_deck_3d.py).
+    pre = argparse.ArgumentParser(add_help=False)
+    pre.add_argument("--geometry", choices=["axisymmetric", "3d"], default="axisymmetric")
+    known, rest = pre.parse_known_args()
+    if known.geometry == "3d":
+        import make_deck_3d
+        make_deck_3d.main(rest)
+        return
+    sys.argv[1:] = rest
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--out", required=True, help="output directory")
     ap.add_argument("--pole-size", type=float, default=0.0,
@@ -118,33 +91,12 @@ def main():
                     "free flight has brought it; the free flight is a rigid translation that "
                     "Newmark integrates exactly): for cheap mesh studies. The runner adds it to "
                     "ccx's times")
-    ap.add_argument("--nlgeom", action="store_true", help="geometrically nonlinear (*STEP, NLGEOM"
-                    "; with *ELASTIC this is St Venant-Kirchhoff)")
-    ap.add_argument("--penalty", type=float, default=50.0,
-                    help="slope of the linear pressure-overclosure law in units of E per length")
-    ap.add_argument("--sigma-inf", type=float, default=None, help="ccx's tension at large "
-                    "clearance sigma_inf (sets the smoothing of the linear law; default 1e-4 of "
-                    "the Hertz peak pressure)")
-    ap.add_argument("--c0", type=float, default=0.0,
-                    help="ccx's c0 (spring elements up to clearance c0 sqrt(slave area); 0: ccx's "
-                    "default 1e-3)")
-    ap.add_argument("--alpha", type=float, default=None,
-                    help="HHT alpha of *DYNAMIC, in [-1/3, 0] (default 0, trapezoidal Newmark, for "
-                    "the linear material; ccx's own default -0.05 with --nlgeom, where 0 diverges "
-                    "in ccx 2.20 with DIRECT, see README.md)")
-    ap.add_argument("--launch", choices=["gravity", "initial-velocity"], default="gravity",
-                    help="how the sphere gets its speed: a one-increment body-force step "
-                    "(default), or *INITIAL CONDITIONS, TYPE=VELOCITY, which ccx 2.20 ignores on "
-                    "CAX8 nodes (kept to show that; see README.md)")
+    ccx_deck.add_penalty_dynamics_options(
+        ap, penalty=50.0, launch="gravity",
+        launch_help="ccx 2.20 ignores the latter on CAX8 nodes (kept to show that; README.md)")
     ap.add_argument("--slave-depth", type=float, default=None,
                     help="slave faces: the surface within this axial distance of the pole "
                     "(default min(R, 4 x Hertz contact radius + 0.5))")
-    ap.add_argument("--contact", choices=["node", "surface"], default="node",
-                    help="*CONTACT PAIR TYPE: NODE TO SURFACE (default) or SURFACE TO SURFACE")
-    ap.add_argument("--small-sliding", action="store_true",
-                    help="*CONTACT PAIR, SMALL SLIDING: pair the slave nodes once per increment "
-                    "instead of in every iteration")
-    ap.add_argument("--print-every", type=int, default=1, help="*NODE PRINT FREQUENCY")
     a = ap.parse_args()
 
     h = hertz(a.rho)
@@ -153,17 +105,11 @@ def main():
         a.dt = 0.05 if a.rho == 1.0 else 0.0025 * scale
     if a.end_time is None:
         a.end_time = 4.0 if a.rho == 1.0 else (2.2 if a.rho == 0.001 else 2.0 + 2.4 * h["duration"])
-    if a.alpha is None:
-        a.alpha = -0.05 if a.nlgeom else 0.0
     if a.pole_size <= 0:
         a.pole_size = 0.05 * (a.rho / 0.001) ** 0.2
     if a.zone_radius <= 0:
         a.zone_radius = 0.5 * (a.rho / 0.001) ** 0.2
-    if a.sigma_inf is None:
-        a.sigma_inf = 1e-4 * h["peak_pressure"]
-    if a.slave_depth is None:
-        a.slave_depth = min(R, (4.0 * h["contact_radius"] + 0.5) ** 2 / (2 * R))
-    slope = a.penalty * E
+    slope = ccx_deck.complete_options(a, h, R, E)
     nsteps = int(round((a.end_time - a.start_time) / a.dt))
 
     # The launch: the first step is one increment dt long with a uniform body force g = v / dt
@@ -246,64 +192,17 @@ def main():
         w(f"{e}, S{f}")
     w("*SURFACE, NAME=SMASTER")
     w(f"{plate_el}, S1")
-    w("*MATERIAL, NAME=SPHERE")
-    w("*ELASTIC")
-    w(f"{E:.15g}, {NU:.15g}")
-    w("*DENSITY")
-    w(f"{a.rho:.15g}")
-    w("*MATERIAL, NAME=PLATE")
-    w("*ELASTIC")
-    w(f"{E:.15g}, {NU:.15g}")
-    w("*DENSITY")
-    w(f"{a.rho:.15g}")
-    w("*SOLID SECTION, ELSET=ESPHERE, MATERIAL=SPHERE")
-    w("*SOLID SECTION, ELSET=EPLATE, MATERIAL=PLATE")
+    ccx_deck.write_sphere_and_plate(w, E, NU, a.rho)
     w("*BOUNDARY")
     w("AXIS, 1, 1")
     w("NPLATE, 1, 3")
-    w("*SURFACE INTERACTION, NAME=SINT")
-    w("*SURFACE BEHAVIOR, PRESSURE-OVERCLOSURE=LINEAR")
-    w(f"{slope:.15g}, {a.sigma_inf:.15g}" + (f", {a.c0:.15g}" if a.c0 > 0 else ""))
-    ctype = "NODE TO SURFACE" if a.contact == "node" else "SURFACE TO SURFACE"
-    ss = ", SMALL SLIDING" if a.small_sliding else ""
-    w(f"*CONTACT PAIR, INTERACTION=SINT, TYPE={ctype}{ss}")
-    w("SSLAVE, SMASTER")
+    ccx_deck.write_contact(w, slope, a.sigma_inf, a.c0, a.contact, a.small_sliding)
     if a.launch == "initial-velocity":
         w("*INITIAL CONDITIONS, TYPE=VELOCITY")
         w(f"NSPHERE, 2, {V:.15g}")
 
-    nl = ", NLGEOM" if a.nlgeom else ""
-    dyn = f"*DYNAMIC, DIRECT, ALPHA={a.alpha:g}"
-
-    def outputs():
-        w(f"*NODE PRINT, NSET=NPLATE, TOTALS=ONLY, FREQUENCY={a.print_every}")
-        w("RF")
-        w("*NODE PRINT, NSET=POLE")
-        w("U")
-        w("*NODE PRINT, NSET=FARPOLE")
-        w("U")
-
-    if a.launch == "gravity":
-        w(f"*STEP{nl}, INC=10")
-        w(dyn)
-        w(f"{a.dt:.15g}, {a.dt:.15g}")
-        w("*DLOAD")
-        w(f"ESPHERE, GRAV, {V / a.dt:.15g}, 0., 1., 0.")
-        outputs()
-        w("*END STEP")
-        rest = a.end_time - a.start_time - a.dt
-        w(f"*STEP{nl}, INC={nsteps + 10}")
-        w(dyn)
-        w(f"{a.dt:.15g}, {rest:.15g}")
-        w("*DLOAD, OP=NEW")
-        outputs()
-        w("*END STEP")
-    else:
-        w(f"*STEP{nl}, INC={nsteps + 10}")
-        w(dyn)
-        w(f"{a.dt:.15g}, {a.end_time - a.start_time:.15g}")
-        outputs()
-        w("*END STEP")
+    ccx_deck.write_steps(w, a, nsteps, (V / a.dt, 0, 1, 0),
+                         lambda: ccx_deck.write_outputs(w, a.print_every))
 
     with open(os.path.join(a.out, "sphere.inp"), "w") as f:
         f.write("\n".join(inp) + "\n")

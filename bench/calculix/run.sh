@@ -12,24 +12,38 @@
 #   bench/calculix/run.sh --nlgeom                          # finite strain (St Venant-Kirchhoff)
 #   bench/calculix/run.sh --rho 1                           # dt 0.05, end time 4
 #   bench/calculix/run.sh --start-time 1.95 ...             # skip most of the free flight
+#   bench/calculix/run.sh --geometry 3d --label quarter_n8  # the 3D quarter sphere (make_deck_3d.py)
 # Writes bench/results/calculix/LABEL/ (deck, mesh, ccx output, history.csv, history.png,
 # summary.csv) and appends the summary row to bench/results/calculix.csv; prints it as one line.
-# Environment: CCX_THREADS (2), RESULTS (bench/results/calculix).
+# With --geometry 3d: bench/results/calculix_3d/LABEL/ and bench/results/calculix_3d.csv.
+# Environment: CCX_THREADS (2), RESULTS (bench/results/calculix or bench/results/calculix_3d).
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 root=$(cd "$here/../.." && pwd)
-results=${RESULTS:-$root/bench/results/calculix}
 threads=${CCX_THREADS:-2}
 python=/usr/bin/python3
 
 label=""
-if [[ ${1:-} == --label ]]; then
-  label=$2
-  shift 2
-fi
+geometry=axisymmetric
+args=()
+while (($#)); do
+  case $1 in
+    --label) label=$2; shift 2 ;;
+    --geometry) geometry=$2; args+=("$1" "$2"); shift 2 ;;
+    *) args+=("$1"); shift ;;
+  esac
+done
+set -- "${args[@]}"
 if [[ -z $label ]]; then
   label=$(printf '%s' "${*:-default}" | tr -s ' =' '__' | tr -cd 'A-Za-z0-9._-' | sed 's/^-*//')
   label=${label:-default}
+fi
+if [[ $geometry == 3d ]]; then
+  results=${RESULTS:-$root/bench/results/calculix_3d}
+  summary=$results/../calculix_3d.csv
+else
+  results=${RESULTS:-$root/bench/results/calculix}
+  summary=$results/../calculix.csv
 fi
 
 skip() {
@@ -75,7 +89,6 @@ if ((status != 0)) || grep -q '\*ERROR' ccx.log; then
 fi
 
 line=$($python "$here/analyze.py" "$dir" --label "$label")
-summary=$results/../calculix.csv
 if [[ ! -s $summary ]]; then
   head -1 "$dir/summary.csv" >"$summary"
 fi

@@ -404,7 +404,7 @@ double energy_rise_in_persistent_contact(const History& history)
 //   the whole impact with the default guards (held normals: both stopped by the energy guard,
 //   exit 3 at t = 0.033 and 0.049); the momentum's x and z components stay constant to 1e-10 of
 //   m v / 2 (measured 1.4e-13 and 6.6e-13; generalized-alpha 7.8e-14 and 5.3e-13).
-TEST(SlidingEnergy, ObliqueSpheresSlideWithoutEnergyGainOnEveryTreatment)
+TEST(SlidingEnergy, ObliqueSpheresSlideWithoutEnergyGainOnTheDefaultTreatment)
 {
   const std::vector<std::string> coarse = {
       "Mesh/geo parameters=Angle: 30, Gap: 0.01, N1: 3, NR1: 2, N2: 2, NR2: 2, PoleGrading: 2",
