@@ -127,13 +127,13 @@ double ContactConstraints<dim>::gap(const unsigned int pair_index,
 }
 
 template <int dim>
-void ContactConstraints<dim>::set_reference_gaps(std::vector<double> reference)
+void ContactConstraints<dim>::hold_gaps(const Vector<double>& reference, std::vector<bool> held)
 {
-  if (!reference.empty() && reference.size() != pairs.size())
-    throw std::invalid_argument(
-        "ContactConstraints::set_reference_gaps: " + std::to_string(reference.size()) +
-        " gaps for " + std::to_string(pairs.size()) + " pairs");
-  reference_gaps = std::move(reference);
+  if (!held.empty() && held.size() != pairs.size())
+    throw std::invalid_argument("ContactConstraints::hold_gaps: " + std::to_string(held.size()) +
+                                " flags for " + std::to_string(pairs.size()) + " pairs");
+  held_gaps     = std::move(held);
+  gap_reference = reference;
 }
 
 template <int dim>
@@ -141,7 +141,7 @@ double ContactConstraints<dim>::constraint_gap(const unsigned int pair_index,
                                                const Vector<double>& displacement) const
 {
   const double g = gap(pair_index, displacement);
-  return reference_gaps.empty() ? g : g - reference_gaps[pair_index];
+  return held_gaps.empty() || !held_gaps[pair_index] ? g : g - gap(pair_index, gap_reference);
 }
 
 template <int dim>

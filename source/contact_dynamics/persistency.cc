@@ -4,15 +4,14 @@
 namespace dyncontact
 {
 template <int dim>
-std::vector<double> Persistency<dim>::reference_gaps(const ContactConstraints<dim>& contact,
-                                                     const StepStart& start,
+std::vector<bool> Persistency<dim>::persistent_pairs(const ContactConstraints<dim>& contact,
+                                                     const StepStart& /*start*/,
                                                      const Vector<double>& predictor) const
 {
-  std::vector<double> reference(contact.n_pairs(), 0.);
+  std::vector<bool> persistent(contact.n_pairs());
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
-    if (contact.gap(k, predictor) < 0.)
-      reference[k] = contact.gap(k, start.displacement);
-  return reference;
+    persistent[k] = contact.gap(k, predictor) < 0.;
+  return persistent;
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(Persistency)

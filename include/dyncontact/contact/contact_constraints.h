@@ -126,13 +126,15 @@ public:
   double gap(unsigned int pair, const Vector<double>& displacement) const;
 
   /**
-   * The gap each pair's constraint holds at or above, per candidate pair [length]: the solve
-   * enforces g_k(u) - reference_k >= 0 (equal to it on the active pairs) instead of g_k(u) >= 0.
-   * Empty means zero for every pair, the impenetrability condition and the default. A gap-rate
-   * (persistency) treatment sets g_k(u_n) for the step's persisting pairs, so that the constraint
-   * reads g_{n+1} - g_n >= 0 (Persistency). Throws std::invalid_argument for a wrong length.
+   * The pairs `held` (one flag per candidate pair; empty: none, the impenetrability condition and
+   * the default) hold their gap of the configuration `reference` (a border vector, u_n): the
+   * solve enforces g_k(u) - g_k(reference) >= 0 (equal on the active pairs) instead of
+   * g_k(u) >= 0, both gaps measured by the pair as it is at u, its master point and normal
+   * included. A gap-rate (persistency) treatment holds the step's persisting pairs, so that the
+   * constraint reads g_{n+1} - g_n >= 0 (Persistency). Throws std::invalid_argument for a wrong
+   * length.
    */
-  void set_reference_gaps(std::vector<double> reference);
+  void hold_gaps(const Vector<double>& reference, std::vector<bool> held);
 
   /**
    * Calls f(multiplier, dof) for every volume DoF the multipliers of a candidate pair can couple
@@ -205,7 +207,7 @@ public:
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
 private:
-  /** g_k(u) - reference_k: what the solve constrains (see set_reference_gaps()). */
+  /** g_k(u) - g_k(reference) or g_k(u): what the solve constrains (see hold_gaps()). */
   double constraint_gap(unsigned int pair, const Vector<double>& displacement) const;
 
   /**
@@ -233,7 +235,8 @@ private:
   ContactFormulation formulation;
   std::vector<bool> active;
   Vector<double> multiplier_values;
-  std::vector<double> reference_gaps; ///< empty: zero for every pair
-  double force_factor = 1.;           ///< see set_force_per_multiplier()
+  std::vector<bool> held_gaps;  ///< hold_gaps(): empty, none
+  Vector<double> gap_reference; ///< hold_gaps(): the configuration whose gaps are held
+  double force_factor = 1.;     ///< see set_force_per_multiplier()
 };
 } // namespace dyncontact

@@ -69,12 +69,12 @@ public:
   }
 
   /**
-   * Before the step's solve, after adjust_predictor(): the gap each candidate pair's constraint
-   * holds at or above in this step (ContactConstraints::set_reference_gaps(); `predictor` is the
-   * adjusted one). Empty, the impenetrability condition g_{n+1} >= 0, by default; Persistency
-   * returns g_k(u_n) for the pairs that persist.
+   * Before the step's solve, after adjust_predictor(): per candidate pair, whether its constraint
+   * holds its gap of u_n in this step instead of g_{n+1} >= 0 (ContactConstraints::hold_gaps();
+   * `predictor` is the adjusted one). Empty, the impenetrability condition for every pair, by
+   * default; Persistency flags the pairs that persist.
    */
-  virtual std::vector<double> reference_gaps(const ContactConstraints<dim>& /*contact*/,
+  virtual std::vector<bool> persistent_pairs(const ContactConstraints<dim>& /*contact*/,
                                              const StepStart& /*start*/,
                                              const Vector<double>& /*predictor*/) const
   {
