@@ -5,7 +5,6 @@ namespace dyncontact
 {
 template <int dim>
 std::vector<bool> Persistency<dim>::persistent_pairs(const ContactConstraints<dim>& contact,
-                                                     const StepStart& /*start*/,
                                                      const Vector<double>& predictor) const
 {
   std::vector<bool> persistent(contact.n_pairs());

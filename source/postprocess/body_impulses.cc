@@ -2,7 +2,7 @@
 #include <dyncontact/base/sum_over_ranks.h>
 #include <dyncontact/postprocess/body_impulses.h>
 
-#include <sstream>
+#include <algorithm>
 
 namespace dyncontact
 {
@@ -43,6 +43,18 @@ void BodyImpulses<dim>::index(const std::vector<Node<dim>>& nodes,
   for (const Tensor<1, dim>& direction : directions)
     impact_components.push_back(direction * impact_direction);
   const unsigned int n_directions = directions.size();
+  names.clear();
+  for (unsigned int b = 0; b < n_bodies; ++b)
+    for (const Tensor<1, dim>& direction : directions)
+    {
+      names.push_back("body " + std::to_string(b + 1));
+      if (n_directions == 1)
+        continue;
+      const auto axis = std::find(direction.begin_raw(), direction.end_raw(), 1.);
+      AssertThrow(axis != direction.end_raw(),
+                  ExcMessage("BodyImpulses: several momentum directions must be Cartesian axes"));
+      names.back() += std::string(" along ") + "xyz"[axis - direction.begin_raw()];
+    }
   dof_body.assign(mass.size(), 0);
   dof_weights.assign(mass.size() * n_directions, 0.);
   is_contact_dof.assign(mass.size(), false);
@@ -60,22 +72,6 @@ void BodyImpulses<dim>::index(const std::vector<Node<dim>>& nodes,
           for (unsigned int d = 0; d < dim; ++d)
             is_contact_dof[contact.border().volume_dof(node.dofs[d])] = true;
         });
-}
-
-template <int dim>
-std::string BodyImpulses<dim>::track_name(const unsigned int t) const
-{
-  const unsigned int n_directions = directions.size();
-  std::string name                = "body " + std::to_string(t / n_directions + 1);
-  if (n_directions == 1)
-    return name;
-  const Tensor<1, dim>& direction = directions[t % n_directions];
-  for (unsigned int d = 0; d < dim; ++d)
-    if (direction[d] == 1.)
-      return name + " along " + std::string(1, "xyz"[d]);
-  std::ostringstream components;
-  components << " along (" << direction << ")";
-  return name + components.str();
 }
 
 template <int dim>

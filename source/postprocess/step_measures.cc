@@ -28,10 +28,8 @@ void StepMeasures<dim>::measure_momentum(const StepState& state, Measures& measu
 {
   // Sums over the owned nodes: momentum P, mass M, first mass moment S = sum m x and moment of
   // momentum about the origin sum x cross m v (3D); then L about x_c = S / M is that minus
-  // x_c cross P; then each body's momentum.
-  const unsigned int n_bodies = measures.momenta.size();
-  std::vector<double> sums(3 * max_dimension + 1 + n_bodies * max_dimension, 0.);
-  const unsigned int first_body_sum = 3 * max_dimension + 1;
+  // x_c cross P.
+  std::vector<double> sums(3 * max_dimension + 1, 0.);
   for (const Node<dim>& node : nodes)
   {
     if (!state.velocity.in_local_range(node.dofs[0]))
@@ -50,9 +48,8 @@ void StepMeasures<dim>::measure_momentum(const StepState& state, Measures& measu
       sums[d] += momentum[d];
       sums[max_dimension + d] += node_mass * position[d];
       sums[2 * max_dimension + d] += moment[d];
-      sums[first_body_sum + node.body * max_dimension + d] += momentum[d];
     }
-    sums[3 * max_dimension] += node_mass;
+    sums.back() += node_mass;
   }
   sum_over_ranks(sums, state.velocity.get_mpi_communicator());
   Tensor<1, max_dimension> first_moment, moment;
@@ -62,17 +59,17 @@ void StepMeasures<dim>::measure_momentum(const StepState& state, Measures& measu
     first_moment[d]      = sums[max_dimension + d];
     moment[d]            = sums[2 * max_dimension + d];
   }
-  const double total_mass = sums[3 * max_dimension];
-  if (dim == 3 && total_mass > 0.)
+  if (dim == 3 && sums.back() > 0.)
     measures.angular_momentum =
-        moment - cross_product_3d(first_moment / total_mass, measures.momentum);
-  if (dim == 3)
-  {
-    measures.body_momenta.resize(n_bodies);
-    for (unsigned int b = 0; b < n_bodies; ++b)
-      for (unsigned int d = 0; d < max_dimension; ++d)
-        measures.body_momenta[b][d] = sums[first_body_sum + b * max_dimension + d];
-  }
+        moment - cross_product_3d(first_moment / sums.back(), measures.momentum);
+  // Each body's components: BodyImpulses' tracks, whose directions in 3D are x, y and z.
+  const unsigned int n_bodies = measures.momenta.size();
+  AssertThrow(measures.momentum_tracks.size() == n_bodies * dim,
+              ExcMessage("StepMeasures: the momentum directions of a 3D model are x, y and z"));
+  measures.body_momenta.resize(n_bodies);
+  for (unsigned int b = 0; b < n_bodies; ++b)
+    for (unsigned int d = 0; d < dim; ++d)
+      measures.body_momenta[b][d] = measures.momentum_tracks[b * dim + d];
 }
 
 template <int dim>

@@ -13,7 +13,7 @@ StepAcceptance<dim>::StepAcceptance(const GuardParameters& parameters,
                                     const BodyImpulses<dim>& impulses)
     : parameters(parameters), integrator(integrator), contact(contact), fields(contact),
       dynamics(dynamics), impulses(impulses),
-      guards(parameters, std::isfinite(integrator.stability_limit()))
+      guards(parameters, std::isfinite(integrator.stability_limit()), impulses.track_names())
 {
 }
 
@@ -61,9 +61,6 @@ StepGuards::Figures StepAcceptance<dim>::figures(const double time, const Measur
     return integrator.algorithmic_energy(
         state.kinetic_energy, state.strain_energy, state.acceleration_energy);
   };
-  std::vector<std::string> track_names;
-  for (unsigned int t = 0; t < impulses.n_tracks(); ++t)
-    track_names.push_back(impulses.track_name(t));
   return {time,
           guarded_energy + energy_at_this_step_size(measures) - energy_at_this_step_size(accepted),
           impulses.ledger().external_work,
@@ -71,7 +68,6 @@ StepGuards::Figures StepAcceptance<dim>::figures(const double time, const Measur
           multiplier_magnitude,
           measures.momentum_tracks,
           impulses.ledger().impulses,
-          track_names,
           measures.momentum_magnitude,
           measures.kinetic_energy + measures.strain_energy};
 }

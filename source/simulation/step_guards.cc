@@ -5,8 +5,11 @@
 
 namespace dyncontact
 {
-StepGuards::StepGuards(const GuardParameters& parameters, const bool plain_energy_checked)
-    : parameters(parameters), plain_energy_checked(plain_energy_checked)
+StepGuards::StepGuards(const GuardParameters& parameters,
+                       const bool plain_energy_checked,
+                       std::vector<std::string> track_names)
+    : parameters(parameters), plain_energy_checked(plain_energy_checked),
+      track_names(std::move(track_names))
 {
 }
 
@@ -82,7 +85,7 @@ std::pair<std::string, double> StepGuards::violation(const Guard guard, const Fi
     const double difference = std::abs(change - step.impulses[b]) / scale;
     if (difference > parameters.momentum_tolerance)
     {
-      reason << "momentum guard: " << step.track_names[b] << " changed its momentum by " << change
+      reason << "momentum guard: " << track_names[b] << " changed its momentum by " << change
              << " but received an impulse of " << step.impulses[b] << ", a difference of "
              << difference << " of the momentum scale (Guards/momentum tolerance = "
              << parameters.momentum_tolerance << ")";

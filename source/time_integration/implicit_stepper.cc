@@ -68,7 +68,7 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
       integrator.rate_map(), contact, border_mass, start, border_acceleration, border_predictor);
   border.scatter(border_acceleration, start_acceleration);
   border.scatter(border_predictor, predictor);
-  contact.hold_gaps(at_start[0], dynamics.persistent_pairs(contact, start, border_predictor));
+  contact.hold_gaps(at_start[0], dynamics.persistent_pairs(contact, border_predictor));
   copy_owned_entries(loads.force(time, mass), current.external_force);
   // A dissipative member balances at t_{n+1-alpha_f}: the solve takes W_eff (GeneralizedAlpha).
   DistributedVector effective_force;

@@ -318,8 +318,7 @@ TEST(ContactDynamics, PersistencyTurnsThePairsPredictedToCloseIntoGapRateConstra
   pair.normal            = Tensor<1, 1>({1.});
   pair.penalty_stiffness = 0.;
   const auto persistency = create_contact_dynamics<1>(ContactDynamicsKind::persistency);
-  const std::vector<bool> no_fixed_dofs(2, false);
-  Vector<double> u(2), zero(2), halfway(2), predictor(2), residual(1);
+  Vector<double> u(2), halfway(2), predictor(2), residual(1);
   halfway[0] = 0.005; // the gap halved: 0.005
   for (const double approach_speed : {1., -1.})
   {
@@ -329,8 +328,7 @@ TEST(ContactDynamics, PersistencyTurnsThePairsPredictedToCloseIntoGapRateConstra
     v[1]      = -0.25 * approach_speed;
     predictor = u;
     predictor.add(0.1, v);
-    const auto persistent =
-        persistency->persistent_pairs(contact, {u, v, zero, zero, no_fixed_dofs}, predictor);
+    const auto persistent = persistency->persistent_pairs(contact, predictor);
     ASSERT_EQ(persistent.size(), 1u);
     const bool closing = approach_speed > 0.;
     EXPECT_EQ(persistent[0], closing) << approach_speed;

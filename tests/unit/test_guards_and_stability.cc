@@ -195,9 +195,8 @@ namespace dyncontact::testing
 TEST(StepGuards, MomentumGuardReadsEveryDirection)
 {
   const GuardParameters parameters{true, 1e-4, 1e-2, true, 1e-6, true, 1e-6, 1e-4};
-  StepGuards guards(parameters, false);
-  const std::vector<std::string> names = {"body 1 along x", "body 1 along y", "body 1 along z"};
-  StepGuards::Figures step{0., 1., 0., 0., 0., {0., 0., -1.}, {0., 0., 0.}, names, 1., 1.};
+  StepGuards guards(parameters, false, {"body 1 along x", "body 1 along y", "body 1 along z"});
+  StepGuards::Figures step{0., 1., 0., 0., 0., {0., 0., -1.}, {0., 0., 0.}, 1., 1.};
   guards.initialize(step);
   step.time                = 0.01;
   step.momenta             = {1e-3, 0., -1.};

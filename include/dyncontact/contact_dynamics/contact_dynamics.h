@@ -75,7 +75,6 @@ public:
    * default; Persistency flags the pairs that persist.
    */
   virtual std::vector<bool> persistent_pairs(const ContactConstraints<dim>& /*contact*/,
-                                             const StepStart& /*start*/,
                                              const Vector<double>& /*predictor*/) const
   {
     return {};

@@ -39,11 +39,8 @@ template <int dim>
 class Persistency : public ImplicitContactImpulse<dim>
 {
 public:
-  using typename ImplicitContactImpulse<dim>::StepStart;
-
   /** Per candidate pair, whether g_k(predictor) < 0. */
   std::vector<bool> persistent_pairs(const ContactConstraints<dim>& contact,
-                                     const StepStart& start,
                                      const Vector<double>& predictor) const override;
 };
 } // namespace dyncontact

@@ -96,9 +96,9 @@ public:
   virtual Tensor<1, dim> impact_direction() const = 0;
 
   /**
-   * Orthonormal unit vectors along which each body's momentum change must equal the impulse it
-   * received (the momentum guard, BodyImpulses), spanning impact_direction(). The default: the
-   * impact direction alone (an axisymmetric model's axis, a bar's x).
+   * The unit vectors along which each body's momentum change must equal the impulse it received
+   * (the momentum guard, BodyImpulses), spanning impact_direction(): Cartesian axes, or one
+   * vector. The default: the impact direction alone (an axisymmetric model's axis, a bar's x).
    */
   virtual std::vector<Tensor<1, dim>> momentum_directions() const { return {impact_direction()}; }
 

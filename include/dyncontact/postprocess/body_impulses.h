@@ -63,9 +63,9 @@ public:
 
   /**
    * The per-DoF tables: the body of each DoF (from `nodes`), the components of the unit vector of
-   * its direction along each of `directions` (orthonormal unit vectors, at least one), and
+   * its direction along each of `directions` (one unit vector, or several Cartesian axes), and
    * whether it belongs to a node of a candidate pair; `impact_direction` (a unit vector in the
-   * span of `directions`) for along_impact().
+   * span of `directions`) for along_impact(); the track names.
    */
   void index(const std::vector<Node<dim>>& nodes,
              const std::vector<Tensor<1, dim>>& directions,
@@ -75,11 +75,9 @@ public:
   /** n_bodies times the number of directions. */
   unsigned int n_tracks() const { return n_bodies * directions.size(); }
 
-  /**
-   * What the log calls track t: "body b" with one direction, else "body b along x" (y, z: the
-   * Cartesian axes) or along the direction's components.
+  /** Per track, what the log calls it: "body b" with one direction, else "body b along x" (y, z).
    */
-  std::string track_name(unsigned int t) const;
+  const std::vector<std::string>& track_names() const { return names; }
 
   /** Per body, the projection of a per-track vector on the impact direction. */
   std::vector<double> along_impact(const std::vector<double>& tracks) const;
@@ -141,6 +139,7 @@ private:
   const ContactConstraints<dim>& contact;
   unsigned int n_bodies = 0;
   std::vector<Tensor<1, dim>> directions;
+  std::vector<std::string> names;        ///< per track, track_names()
   std::vector<double> impact_components; ///< per direction, its component along the impact
   std::vector<unsigned int> dof_body;
   /// per DoF and direction (DoF-major), the component of the DoF's unit vector along it

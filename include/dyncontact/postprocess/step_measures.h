@@ -81,8 +81,8 @@ private:
   const std::vector<Node<dim>>& nodes;
 
   /**
-   * Measures::momentum and, in 3D, angular_momentum and body_momenta (one per entry of
-   * Measures::momenta, which must be measured before) of `state`. Collective.
+   * Measures::momentum and, in 3D, angular_momentum of `state`, and body_momenta from
+   * Measures::momentum_tracks (x, y, z per body; measured before). Collective.
    */
   void measure_momentum(const StepState& state, Measures& measures) const;
 };

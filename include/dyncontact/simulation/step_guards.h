@@ -51,24 +51,26 @@ public:
   /** What the guards read about one step (the state at its end). */
   struct Figures
   {
-    double time;                          ///< t_{n+1}
-    double energy;                        ///< algorithmic energy at t_{n+1}
-    double external_work;                 ///< work of the external forces since t = 0
-    double contact_force;                 ///< recovered total contact force, compression positive
-    double multiplier_magnitude;          ///< sum of the active pairs' |force|
-    std::vector<double> momenta;          ///< per track (BodyImpulses: a body along a direction)
-    std::vector<double> impulses;         ///< per track, accumulated since t = 0
-    std::vector<std::string> track_names; ///< per track, as the log names it (BodyImpulses)
-    double momentum_magnitude;            ///< sum of |m v| over every DoF (zero only at rest)
-    double plain_energy;                  ///< kinetic + strain energy at t_{n+1}
+    double time;                  ///< t_{n+1}
+    double energy;                ///< algorithmic energy at t_{n+1}
+    double external_work;         ///< work of the external forces since t = 0
+    double contact_force;         ///< recovered total contact force, compression positive
+    double multiplier_magnitude;  ///< sum of the active pairs' |force|
+    std::vector<double> momenta;  ///< per track (BodyImpulses: a body along a direction)
+    std::vector<double> impulses; ///< per track, accumulated since t = 0
+    double momentum_magnitude;    ///< sum of |m v| over every DoF (zero only at rest)
+    double plain_energy;          ///< kinetic + strain energy at t_{n+1}
   };
 
   /**
    * `plain_energy_checked`: the integrator is conditionally stable (Newmark with 2 beta < gamma),
    * whose algorithmic energy underweights the highest modes; the energy guard then also bounds
-   * the plain energy (Guards/plain energy tolerance).
+   * the plain energy (Guards/plain energy tolerance). `track_names`: per entry of
+   * Figures::momenta, what the momentum guard's message calls it (BodyImpulses::track_names()).
    */
-  StepGuards(const GuardParameters& parameters, bool plain_energy_checked);
+  StepGuards(const GuardParameters& parameters,
+             bool plain_energy_checked,
+             std::vector<std::string> track_names);
 
   /** Takes the references (E_0, p_0) from the figures of the initial state. */
   void initialize(const Figures& initial);
@@ -115,6 +117,7 @@ private:
   double force_scale          = 0.;
   double momentum_scale       = 0.;
   std::vector<double> initial_momenta;
+  std::vector<std::string> track_names;
   /** Per guard switched off: the first violation's text and time, and the largest amount. */
   struct Record
   {
