@@ -56,6 +56,11 @@ void RunProgress::end_step(const bool in_contact)
   ++step_count[in_contact];
 }
 
+void RunProgress::count_pairs_across_ranks(const unsigned int n_pairs)
+{
+  most_pairs_across_ranks = std::max(most_pairs_across_ranks, n_pairs);
+}
+
 void RunProgress::report(const unsigned int nominal_step,
                          const double time,
                          const bool finished,
@@ -108,6 +113,10 @@ void RunProgress::report_totals(const unsigned int factorizations,
       << peak_memory.max << " MiB (largest, rank " << peak_memory.max_index << "), "
       << peak_memory.min << " MiB (smallest), " << peak_memory.avg << " MiB (mean)"
       << std::defaultfloat << std::setprecision(6) << "\n";
+  if (const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD); n_ranks > 1)
+    log << "dyncontact: at most " << most_pairs_across_ranks << " active contact pairs in one step "
+        << "had their slave node on one of the " << n_ranks
+        << " ranks and their whole master face on others\n";
   if (!solver_statistics.empty())
     log << "dyncontact: " << solver_statistics << "\n";
 }

@@ -1,4 +1,5 @@
 #include <dyncontact/base/dimensions.h>
+#include <dyncontact/postprocess/pairs_across_ranks.h>
 #include <dyncontact/simulation/checkpoint_file.h>
 #include <dyncontact/simulation/interruption.h>
 #include <dyncontact/simulation/simulation.h>
@@ -346,6 +347,10 @@ void Simulation<dim>::run(const std::string& resume_directory)
     const auto active_before =
         std::count(before.contact.active.begin(), before.contact.active.end(), true);
     progress.end_step(active_before > 0 || problem->contact->n_active() > 0);
+    progress.count_pairs_across_ranks(
+        pairs_across_ranks(*problem->contact,
+                           problem->discretization.dof_handler.locally_owned_dofs(),
+                           MPI_COMM_WORLD));
     progress.report(nominal_step,
                     time,
                     controller->finished(),

@@ -11,7 +11,9 @@ jumps by the pole's velocity and acceleration (a jump the contact-dynamics treat
 mass redistribution does at the three spheres' two contacts, can exceed them). A body's momentum
 and impulse are scaled by the largest momentum or impulse of any body (MOMENTUM_COLUMNS): a body
 at rest by symmetry (the middle of three spheres) has a momentum of round-off size, which is no
-scale for its own differences.
+scale for its own differences. The angular momentum components are scaled by the largest of
+them (ANGULAR_MOMENTUM_COLUMNS): a component that vanishes by symmetry (L_x and L_z of the oblique
+spheres, whose motion lies in their symmetry plane y = 0) is round-off, no scale either.
 """
 import csv
 import sys
@@ -24,6 +26,7 @@ SCALE_COLUMN = {
 }
 
 MOMENTUM_COLUMNS = ("momentum_", "impulse_")
+ANGULAR_MOMENTUM_COLUMNS = ("angular_momentum_",)
 
 
 def read(path):
@@ -43,9 +46,10 @@ def main():
     for column, name in enumerate(names_a):
         if name == "newton_iterations":
             continue
-        if name.startswith(MOMENTUM_COLUMNS):
-            scale_columns = [j for j, other in enumerate(names_a)
-                             if other.startswith(MOMENTUM_COLUMNS)]
+        group = next((prefixes for prefixes in (MOMENTUM_COLUMNS, ANGULAR_MOMENTUM_COLUMNS)
+                      if name.startswith(prefixes)), None)
+        if group:
+            scale_columns = [j for j, other in enumerate(names_a) if other.startswith(group)]
         else:
             scale_columns = sorted({column, names_a.index(SCALE_COLUMN.get(name, name))})
         scale = max(abs(row[j]) for row in rows_a for j in scale_columns)

@@ -43,6 +43,11 @@ public:
    * start or end.
    */
   void end_step(bool in_contact);
+  /**
+   * The active pairs of the step that couple two ranks' data (pairs_across_ranks()); the most in
+   * one step is reported by report_totals().
+   */
+  void count_pairs_across_ranks(unsigned int n_pairs);
 
   /**
    * The progress line after nominal step `nominal_step` at `time`, if due (`active_set_changed`,
@@ -60,8 +65,9 @@ public:
    * The run's last lines: steps, cuts, solves (`factorizations`, `low_rank_updates`), the wall
    * time and its `phases` [s], the `directory` of the results, the cost per step and the peak
    * resident memory of the ranks, `peak_memory` [MiB] (largest with its rank, smallest, mean);
-   * then `solver_statistics` (the direct solver's own figures of its last factorization) if not
-   * empty.
+   * on several ranks the most active pairs of one step that coupled two ranks' data
+   * (count_pairs_across_ranks()); then `solver_statistics` (the direct solver's own figures of its
+   * last factorization) if not empty.
    */
   void report_totals(unsigned int factorizations,
                      unsigned int low_rank_updates,
@@ -92,7 +98,8 @@ private:
   unsigned int steps_this_run = 0;
   double start_fraction       = 0.; ///< of the run, done before this one started (resume)
   /** Wall time [s] and number of this run's steps without ([0]) and with ([1]) active pairs. */
-  double step_wall[2]        = {0., 0.};
-  unsigned int step_count[2] = {0, 0};
+  double step_wall[2]                  = {0., 0.};
+  unsigned int step_count[2]           = {0, 0};
+  unsigned int most_pairs_across_ranks = 0; ///< in one of this run's steps
 };
 } // namespace dyncontact
