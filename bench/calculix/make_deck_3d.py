@@ -105,7 +105,7 @@ def main(argv=None):
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawTextHelpFormatter)
     ap.add_argument("--out", required=True, help="output directory")
     # The defaults are the equal-accuracy mesh of README.md ("The 3D peer"); dyncontact's
-    # shipped mesh is N 8, NR 6, PoleGrading 4.
+    # shipped mesh is N 8, NR 6, PoleGrading 10.
     ap.add_argument("--n", type=int, default=5, help="N of quarter_sphere_3d.geo (cells along "
                     "each cube edge and each eighth of a great circle)")
     ap.add_argument("--nr", type=int, default=4, help="NR of quarter_sphere_3d.geo (cells "

@@ -2,7 +2,7 @@
 # Issue 28, acceptance F: dyncontact against its CalculiX 3D peer at equal accuracy, in one run.
 # Runs, one after the other, each under /usr/bin/time -f "%e %M" (wall seconds, peak RSS kB):
 #   1. build/dyncontact prm/sphere_on_rigid_plane_3d.prm (the shipped quarter sphere, N 8, NR 6,
-#      PoleGrading 4), no VTU;
+#      PoleGrading 10), no VTU;
 #   2. ccx 2.20 on the equal-accuracy deck of make_deck_3d.py (bench/calculix/README.md, "The 3D
 #      deck"), OMP_NUM_THREADS = CCX_NPROC_EQUATION_SOLVER = THREADS;
 # then prints both wall times, peak memories, the accuracy figures (whole sphere: peak, duration,
