@@ -93,8 +93,9 @@ void ContactConstraints<dim>::update_master_points(const Vector<double>& displac
 {
   if (geometry == nullptr)
     return;
-  geometry->update_master_points(
-      BorderDisplacement<dim>{contact_border, displacement}, volume_pairs, move_normals);
+  geometry->update_master_points(BorderDisplacement<dim>{contact_border, displacement},
+                                 volume_pairs,
+                                 move_normals && turning_normals);
   move_pairs_to_border();
 }
 

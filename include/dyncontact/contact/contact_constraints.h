@@ -72,14 +72,28 @@ public:
 
   /**
    * For pairs of a ContactGeometry: moves every pair's master point to `displacement` (a border
-   * vector), and with `move_normals` a node-to-segment pair's normal to its master face's there
-   * (ContactGeometry::update_master_points(); the Newton solver calls it at every iterate). Does
-   * nothing for fixed pairs.
+   * vector), and with `move_normals` (unless set_turning_normals(false)) a node-to-segment pair's
+   * normal to its master face's there (ContactGeometry::update_master_points(); the Newton solver
+   * calls it at every iterate). Does nothing for fixed pairs.
    */
   void update_master_points(const Vector<double>& displacement, bool move_normals);
 
-  /** Whether update_master_points() may turn normals (ContactGeometry::moves_normals()). */
-  bool moves_normals() const { return geometry != nullptr && geometry->moves_normals(); }
+  /**
+   * Whether update_master_points() may turn normals: the geometry can
+   * (ContactGeometry::moves_normals()) and set_turning_normals() did not forbid it.
+   */
+  bool moves_normals() const
+  {
+    return turning_normals && geometry != nullptr && geometry->moves_normals();
+  }
+
+  /**
+   * `turn` false holds every pair's normal over a step at its value of the step's start
+   * (update_geometry()), whatever update_master_points() is asked: what a contact-dynamics
+   * treatment asks for when its energy argument needs the pair's gradient held over the step
+   * (ContactDynamics::turns_pair_normals()). True (the default): normals may turn.
+   */
+  void set_turning_normals(const bool turn) { turning_normals = turn; }
 
   unsigned int n_pairs() const { return pairs.size(); }
   /** The contact nodes the pairs live on. */
@@ -237,6 +251,7 @@ private:
   Vector<double> multiplier_values;
   std::vector<bool> held_gaps;  ///< hold_gaps(): empty, none
   Vector<double> gap_reference; ///< hold_gaps(): the configuration whose gaps are held
-  double force_factor = 1.;     ///< see set_force_per_multiplier()
+  double force_factor  = 1.;    ///< see set_force_per_multiplier()
+  bool turning_normals = true;  ///< see set_turning_normals()
 };
 } // namespace dyncontact
