@@ -11,11 +11,15 @@
 # largest sample, as impact_summary.csv) against Hertz's two equal spheres at speed cos 30; wall
 # time and peak memory from /usr/bin/time. Writes bench/results/oblique_spheres_3d.csv and prints
 # it; about 15 minutes on 2 cores. COARSE=1: the ctest's coarse meshes (N 3/2, 12,756 DoFs).
-#   bench/oblique_spheres_3d.sh            COARSE=1 bench/oblique_spheres_3d.sh
+# STEP=dt: both runs at the time step dt instead of the prm's 0.0025, into
+# bench/results/oblique_spheres_3d_step<dt>(.csv) (STEP=0.00125: about 45 minutes).
+#   bench/oblique_spheres_3d.sh     COARSE=1 bench/oblique_spheres_3d.sh     STEP=0.00125 bench/...
 set -euo pipefail
 source "$(dirname "$0")/common.sh"
-results=bench/results/oblique_spheres_3d
+results=bench/results/oblique_spheres_3d${STEP:+_step$STEP}
 mkdir -p "$results"
+step=()
+[ -n "${STEP:-}" ] && step=(--set "Time integration/time step=$STEP")
 
 meshes="N1: 6, NR1: 4, N2: 5, NR2: 4, PoleGrading: 10"
 if [ "${COARSE:-0}" = 1 ]; then
@@ -29,7 +33,7 @@ run() # name arguments...
   rm -rf "${results:?}/$name"
   /usr/bin/time -f "%e %M" -o "$results/$name.time" build/dyncontact prm/oblique_spheres_3d.prm \
     --quiet --output "$results/$name" --set "Output/vtu interval=0" --set "Output/vtu times=" \
-    "$@" >"$results/$name.log" 2>&1 || echo "$name failed, see $results/$name.log" >&2
+    "${step[@]}" "$@" >"$results/$name.log" 2>&1 || echo "$name failed, see $results/$name.log" >&2
 }
 
 run oblique --set "Mesh/geo parameters=Angle: 30, Gap: 0.01, $meshes"
@@ -94,5 +98,5 @@ for name, angle in (("oblique", 30.), ("central", 0.)):
     row["peak_force_vs_hertz"] = f"{peak / hertz_peak - 1.:+.2%}"
     row["duration_vs_hertz"] = f"{duration / hertz_duration - 1.:+.2%}"
     rows.append(row)
-write_table(rows, root.parent / "oblique_spheres_3d.csv")
+write_table(rows, root.parent / f"{root.name}.csv")
 PY

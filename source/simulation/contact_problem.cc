@@ -34,7 +34,7 @@ ContactProblem<dim>::ContactProblem(ProblemModel<dim>& model,
   penalty_factor  = built.penalty_factor;
   penalty_lowered = built.penalty_lowered_to_resolve_springs;
   dynamics        = create_contact_dynamics<dim>(parameters.contact.dynamics);
-  contact->set_turning_normals(dynamics->turns_pair_normals());
+  contact->set_turning_normals(dynamics->turns_normals());
   // The multipliers as the contact force of the balance the step solves, on every integrator and
   // treatment (doc/method.md, "Contact forces on every integrator").
   contact->set_force_per_multiplier(dynamics->contact_force_factor(integrator.rate_map()) *

@@ -151,16 +151,17 @@ TEST(ContactBorder, ContactForcesScatterToTheVolumeNodesOfThePairs)
 }
 
 // pairs_across_ranks() counts an active pair on the rank that owns its slave node when that rank
-// owns none of its master nodes. Three active pairs and one inactive, each rank's owned DoFs as
-// an IndexSet of the 12 DoFs of 6 toy nodes (one rank here: MPI_COMM_SELF sums nothing else in):
-// a node-to-node pair 0 -> 1, a pair whose slave 2 sees a two-node master face {3, 4}, a wall pair
-// of node 5, and an inactive pair 3 -> 0 (exact counts).
+// owns none of its master nodes. Contact nodes 0-5 stand for volume nodes 1, 3, ..., 11 (DoFs
+// 2, 3, 6, 7, ... of 24), so that a border DoF read as a volume DoF would count wrongly. Three
+// active pairs and one inactive, each rank's owned DoFs as an IndexSet (one rank here:
+// MPI_COMM_SELF sums nothing else in): a node-to-node pair 0 -> 1, a pair whose slave 2 sees a
+// two-node master face {3, 4}, a wall pair of node 5, and an inactive pair 3 -> 0 (exact counts).
 TEST(PairsAcrossRanks, CountsActivePairsWhoseWholeMasterSideAnotherRankOwns)
 {
   const Tensor<1, 2> n({0., 1.});
   std::vector<Node<2>> nodes;
   for (unsigned int i = 0; i < 6; ++i)
-    nodes.push_back(toy_node(i, Point<2>(i, 0.)));
+    nodes.push_back(toy_node(2 * i + 1, Point<2>(i, 0.)));
   ContactPair<2> face_pair = toy_pair(nodes[2], nodes[3], n);
   face_pair.masters        = {{nodes[3], 0.5}, {nodes[4], 0.5}};
   ContactConstraints<2> contact({toy_pair(nodes[0], nodes[1], n),
@@ -168,19 +169,18 @@ TEST(PairsAcrossRanks, CountsActivePairsWhoseWholeMasterSideAnotherRankOwns)
                                  toy_pair(nodes[5], {}, n, Point<2>(5., -1.)),
                                  toy_pair(nodes[3], nodes[0], n)},
                                 ContactFormulation::lagrange_multiplier);
-  Vector<double> u(12);
-  u[1] = 2., u[5] = 2., u[11] = 2.; // nodes 0, 2 and 5 move up through their master sides
+  Vector<double> u(24);
+  for (const unsigned int slave : {0, 2, 5}) // move up through their master sides
+    u[nodes[slave].dofs[1]] = 2.;
   contact.update_active_set(contact.border().gather(u), 1e-12, 0.);
   ASSERT_EQ(contact.n_active(), 3u);
-  const auto owning = [](const std::vector<unsigned int>& owned_nodes)
-  {
-    IndexSet owned(12);
-    for (const unsigned int node : owned_nodes)
-      owned.add_range(2 * node, 2 * node + 2);
-    return owned;
-  };
   const auto count = [&](const std::vector<unsigned int>& owned_nodes)
-  { return pairs_across_ranks(contact, owning(owned_nodes), MPI_COMM_SELF); };
+  {
+    IndexSet owned(24);
+    for (const unsigned int node : owned_nodes)
+      owned.add_range(nodes[node].dofs[0], nodes[node].dofs[1] + 1);
+    return pairs_across_ranks(contact, owned, MPI_COMM_SELF);
+  };
   EXPECT_EQ(count({0, 1, 2, 3, 4, 5}), 0u); // one rank owns everything
   EXPECT_EQ(count({0, 2, 5}), 2u);          // slaves here, every master elsewhere (wall: none)
   EXPECT_EQ(count({0, 2, 3}), 1u);          // node 3 of face {3, 4} is here: not across

@@ -403,7 +403,7 @@ double energy_rise_in_persistent_contact(const History& history)
 //   3.95e-4, and 2.1e-4 with dt halved; persistency measured 6.5e-7; with its gap of u_n measured
 //   by u_n's pair, 4.3e-4).
 // - Contact-stabilized and velocity-update, whose one force per step needs the pair's gradient
-//   held over the step (ContactDynamics::turns_pair_normals()): at most 3e-5 (measured 1.84e-5
+//   held over the step (ContactDynamics::turns_normals()): at most 3e-5 (measured 1.84e-5
 //   and 1.89e-5, and 1.94e-5 for contact-stabilized with dt halved; with the normals turned, as
 //   the other treatments turn them, 4.5e-4 each).
 // - The product default (mass-redistribution, its own beta and gamma) and generalized-alpha run

@@ -91,7 +91,7 @@ public:
    * `turn` false holds every pair's normal over a step at its value of the step's start
    * (update_geometry()), whatever update_master_points() is asked: what a contact-dynamics
    * treatment asks for when its energy argument needs the pair's gradient held over the step
-   * (ContactDynamics::turns_pair_normals()). True (the default): normals may turn.
+   * (ContactDynamics::turns_normals()). True (the default): normals may turn.
    */
   void set_turning_normals(const bool turn) { turning_normals = turn; }
 

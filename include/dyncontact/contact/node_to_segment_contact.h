@@ -49,7 +49,7 @@ namespace dyncontact
  * node's lumped reference area (ContactSurface::lumped_areas(), 2 pi r weighted in axisymmetry).
  * The contact pressure is recovered on the slave surface (ContactSurface::consistent_pressures()).
  *
- * Only 2D meshes of Q2 elements (three support points per face); no self contact, no search
+ * Only Q2 elements (three support points per face in 2D, nine in 3D); no self contact, no search
  * beyond the reference candidate faces.
  */
 template <int dim>

@@ -43,17 +43,17 @@ public:
   virtual double contact_force_factor(const RateMap& /*rates*/) const { return 1.; }
 
   /**
-   * Whether a pair's normal may turn with its master face within a step (node-to-segment and
-   * mortar pairs; ContactConstraints::set_turning_normals()). True by default: a step whose
-   * contact force is the trapezoidal average of the old and new ones (lambda_n G_n and
-   * lambda_{n+1} G_{n+1}) does work on a sliding pair unless its normal follows the face (held
-   * normals: 3.9e-4 of the energy gained on the coarse oblique spheres, turned: 6.7e-6).
-   * ImplicitContactImpulse treatments other than Persistency hold the normals: their one force
-   * per step, gamma G^T lambda_{n+1}, does the work gamma lambda_{n+1} (g_{n+1} - g_n), and g_n
-   * measured by a turned pair is not the closed gap of u_n (turned: an energy swing of 4.5e-4 on
-   * the same case, held: 1.8e-5).
+   * Whether a pair's normal may turn with its master face within a step (node-to-segment pairs
+   * and mortar's projected fallback pairs; ContactConstraints::set_turning_normals()). True by
+   * default: a step whose contact force is the trapezoidal average of the old and new ones
+   * (lambda_n G_n and lambda_{n+1} G_{n+1}) does work on a sliding pair unless its normal follows
+   * the face (held normals: 3.9e-4 of the energy gained on the coarse oblique spheres,
+   * turned: 6.7e-6). ImplicitContactImpulse treatments other than Persistency hold the normals:
+   * their one force per step, gamma G^T lambda_{n+1}, does the work gamma lambda_{n+1} (g_{n+1} -
+   * g_n), and g_n measured by a turned pair is not the closed gap of u_n (turned: an energy swing
+   * of 4.5e-4 on the same case, held: 1.8e-5).
    */
-  virtual bool turns_pair_normals() const { return true; }
+  virtual bool turns_normals() const { return true; }
 
   /** The state at t_n a treatment may start a step from (border vectors). */
   struct StepStart

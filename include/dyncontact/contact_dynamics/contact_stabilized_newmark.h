@@ -33,10 +33,6 @@ namespace dyncontact
 template <int dim>
 class ContactStabilizedNewmark : public ImplicitContactImpulse<dim>
 {
-public:
-  /** False: the pair normals are held over a step (ContactDynamics::turns_pair_normals()). */
-  bool turns_pair_normals() const override { return false; }
-
 protected:
   using typename ImplicitContactImpulse<dim>::StepStart;
 

@@ -29,6 +29,13 @@ class ImplicitContactImpulse : public ContactDynamics<dim>
 public:
   using typename ContactDynamics<dim>::StepStart;
 
+  /**
+   * False: the pair normals are held over a step, as the energy argument above needs (a pair
+   * turned within the step measures g_n along a normal the face of u_n is not normal to;
+   * ContactDynamics::turns_normals()). Persistency turns them.
+   */
+  bool turns_normals() const override { return false; }
+
   /** The free acceleration at the DoFs where the contact force of t_n acts, see above. */
   void adjust_predictor(const RateMap& rates,
                         const ContactConstraints<dim>& contact,

@@ -39,6 +39,11 @@ template <int dim>
 class Persistency : public ImplicitContactImpulse<dim>
 {
 public:
+  /**
+   * True: its constraint is g_{n+1} - g_n itself, both measured by the step's pair, so its work
+   * is exact with turned normals too (ContactDynamics::turns_normals()).
+   */
+  bool turns_normals() const override { return true; }
   /** Per candidate pair, whether g_k(predictor) < 0. */
   std::vector<bool> persistent_pairs(const ContactConstraints<dim>& contact,
                                      const Vector<double>& predictor) const override;

@@ -32,8 +32,6 @@ template <int dim>
 class VelocityUpdate : public ImplicitContactImpulse<dim>
 {
 public:
-  /** False: the pair normals are held over a step (ContactDynamics::turns_pair_normals()). */
-  bool turns_pair_normals() const override { return false; }
   void correct_rates(const RateMap& rates,
                      const ContactConstraints<dim>& contact,
                      const Vector<double>& lumped_mass,

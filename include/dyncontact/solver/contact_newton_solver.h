@@ -32,8 +32,9 @@ namespace dyncontact
  * made. Fixed DoFs (e.g. u_r = 0 on a symmetry axis) keep a zero increment. The pairs' rays
  * are those the contact layer holds on entry (the last converged configuration's); the solver
  * never moves them. It moves the master points, and over a step's first two updates the
- * node-to-segment normals with them (ContactConstraints::update_master_points();
- * node-to-segment pairs only, doc/method.md section 4.1) at every iterate u to the configuration
+ * node-to-segment normals with them unless the contact-dynamics treatment holds them
+ * (ContactConstraints::update_master_points(), set_turning_normals(); node-to-segment pairs
+ * only, doc/method.md section 4.1) at every iterate u to the configuration
  * whose forces the step balances, (1 - alpha_f) u + alpha_f u_n (Newmark: u itself), so that
  * the step's contact forces are those of its own configuration; the tangent leaves out the change
  * of the master points' weights with u (a quasi-Newton step there, converging linearly;
