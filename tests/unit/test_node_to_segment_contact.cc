@@ -1,6 +1,7 @@
 // Unit tests of node-to-segment contact on Q2 faces (NodeToSegmentContact, QuadraticFace) on the
 // paper's mirrored two-sphere mesh, coarse (Refinement 0, shortest edge 0.26 at the poles), and on
 // a single circular face; apart from any time stepping.
+#include <dyncontact/contact/contact_constraints.h>
 #include <dyncontact/contact/node_to_segment_contact.h>
 #include <dyncontact/contact/quadratic_face.h>
 #include <dyncontact/models/gmsh_mesh.h>
@@ -191,6 +192,47 @@ TEST(NodeToSegmentContact, GapIsTheDistanceAlongTheNormalToTheCurvedFace)
   }
   EXPECT_GE(inside_a_face, pairs.size() / 2);
   EXPECT_GE(off_the_nodes, pairs.size() / 2);
+}
+
+// ContactConstraints::set_turning_normals(): with turning off (what contact-stabilized and
+// velocity-update ask for), update_master_points() still moves every pair's master point but
+// leaves its normal exactly at its value of the step's start (update_geometry()); with turning on
+// the normals of pairs whose master point slid along the curved face turn with it. Body 2 of the
+// non-matching configuration above slides by another 0.05 radially between the step's start and
+// the iterate. Exact equality for held normals (nothing may touch them); turned ones differ by
+// more than 1e-6 (the face's curvature 1/8 over the slide) at half of the pairs or more.
+TEST(NodeToSegmentContact, HeldNormalsStayAtTheStepStartWhileMasterPointsMove)
+{
+  const TwoSpheres spheres(16.);
+  const NodeToSegmentContact<2> geometry = spheres.node_to_segment(0.5);
+  const Vector<double> start   = spheres.translation_of_body_2(Tensor<1, 2>({0.1, -0.02}));
+  const Vector<double> iterate = spheres.translation_of_body_2(Tensor<1, 2>({0.15, -0.02}));
+  for (const bool turn : {false, true})
+  {
+    ContactConstraints<2> contact(geometry, ContactFormulation::lagrange_multiplier);
+    contact.set_turning_normals(turn);
+    EXPECT_EQ(contact.moves_normals(), turn);
+    contact.update_geometry(contact.border().gather(start));
+    const std::vector<ContactPair<2>> at_start = contact.candidate_pairs();
+    contact.update_master_points(contact.border().gather(iterate), true);
+    unsigned int moved_points = 0, turned_normals = 0;
+    for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    {
+      const ContactPair<2>& pair = contact.candidate_pairs()[k];
+      moved_points += face_parameter(pair) != face_parameter(at_start[k]);
+      const double turn_angle = (pair.normal - at_start[k].normal).norm();
+      turned_normals += turn_angle > 1e-6;
+      if (!turn)
+      {
+        EXPECT_EQ(pair.normal, at_start[k].normal) << pair.slave.position;
+      }
+    }
+    EXPECT_GE(moved_points, contact.n_pairs() / 2) << "turning " << turn;
+    if (turn)
+    {
+      EXPECT_GE(turned_normals, contact.n_pairs() / 2);
+    }
+  }
 }
 
 // The face through (0, 0), (1, 1) and (0.5, 0.25) is the parabola y = x^2, x = xi: its normal, the
