@@ -44,6 +44,7 @@ public:
    * is exact with turned normals too (ContactDynamics::turns_normals()).
    */
   bool turns_normals() const override { return true; }
+
   /** Per candidate pair, whether g_k(predictor) < 0. */
   std::vector<bool> persistent_pairs(const ContactConstraints<dim>& contact,
                                      const Vector<double>& predictor) const override;
