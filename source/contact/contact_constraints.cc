@@ -11,7 +11,8 @@ namespace dyncontact
 template <int dim>
 ContactConstraints<dim>::ContactConstraints(std::vector<ContactPair<dim>> pairs,
                                             const ContactFormulation formulation)
-    : volume_pairs(std::move(pairs)), formulation(formulation), active(volume_pairs.size(), false)
+    : volume_pairs(std::move(pairs)), formulation(formulation), active(volume_pairs.size(), false),
+      friction(std::vector<double>(volume_pairs.size(), 0.))
 {
   std::vector<std::vector<Node<dim>>> nodes_of_pairs(volume_pairs.size());
   for (unsigned int k = 0; k < volume_pairs.size(); ++k)
@@ -23,9 +24,19 @@ ContactConstraints<dim>::ContactConstraints(std::vector<ContactPair<dim>> pairs,
 template <int dim>
 ContactConstraints<dim>::ContactConstraints(const ContactGeometry<dim>& geometry,
                                             const ContactFormulation formulation)
-    : volume_pairs(geometry.pairs()), geometry(&geometry), formulation(formulation),
-      active(volume_pairs.size(), false)
+    : ContactConstraints(geometry, formulation, std::vector<double>(geometry.pairs().size(), 0.))
 {
+}
+
+template <int dim>
+ContactConstraints<dim>::ContactConstraints(const ContactGeometry<dim>& geometry,
+                                            const ContactFormulation formulation,
+                                            std::vector<double> friction_coefficients)
+    : volume_pairs(geometry.pairs()), geometry(&geometry), formulation(formulation),
+      active(volume_pairs.size(), false), friction(std::move(friction_coefficients))
+{
+  AssertThrow(friction.states().size() == volume_pairs.size(),
+              ExcMessage("one friction coefficient per contact pair"));
   // Every geometry's constructor throws InputError instead (the run indexes its pairs).
   AssertThrow(!volume_pairs.empty(), ExcMessage("a contact geometry without candidate pairs"));
   for (const ContactPair<dim>& pair : volume_pairs)
@@ -57,9 +68,11 @@ void ContactConstraints<dim>::build_border(
     indices.erase(std::unique(indices.begin(), indices.end()), indices.end());
     coupled_nodes.push_back(std::move(indices));
   }
-  // One multiplier per pair, the normal constraint's (a tangential component, of a tied or a
-  // friction model, would need its rows, forces and active set here).
-  block = MultiplierBlock(std::vector<unsigned int>(volume_pairs.size(), 1));
+  // One multiplier per pair, the normal constraint's, and dim - 1 tangential ones with friction.
+  std::vector<unsigned int> components;
+  for (unsigned int k = 0; k < volume_pairs.size(); ++k)
+    components.push_back(friction.n_components(k));
+  block = MultiplierBlock(components);
   multiplier_values.reinit(block.n_multipliers());
   move_pairs_to_border();
 }
@@ -81,10 +94,47 @@ void ContactConstraints<dim>::move_pairs_to_border()
 template <int dim>
 void ContactConstraints<dim>::update_geometry(const Vector<double>& displacement)
 {
-  if (geometry == nullptr)
+  if (geometry != nullptr)
+  {
+    geometry->update_pairs(BorderDisplacement<dim>{contact_border, displacement}, volume_pairs);
+    move_pairs_to_border();
+  }
+  if (!friction.any())
     return;
-  geometry->update_pairs(BorderDisplacement<dim>{contact_border, displacement}, volume_pairs);
-  move_pairs_to_border();
+  // The NCP's stiffness c: the pairs' penalty scale (Lagrange; any c > 0 gives the same answer,
+  // this one keeps lambda_t and c s alike in size), or the penalty's own tangential spring.
+  double largest = 0.;
+  for (const ContactPair<dim>& pair : pairs)
+    largest = std::max(largest, pair.penalty_stiffness);
+  std::vector<double> stiffness;
+  for (const ContactPair<dim>& pair : pairs)
+  {
+    const double eps = formulation == ContactFormulation::penalty && pair.penalty_stiffness > 0.
+                           ? pair.penalty_stiffness
+                           : largest;
+    stiffness.push_back(eps > 0. ? eps / force_factor : 1.);
+  }
+  friction.start_step(pairs, displacement, active, multiplier_values, block, stiffness);
+}
+
+template <int dim>
+double ContactConstraints<dim>::frictional_dissipation(const Vector<double>& displacement,
+                                                       const double new_weight) const
+{
+  return friction.any()
+             ? friction.dissipation(
+                   displacement, active, multiplier_values, block, force_factor, new_weight)
+             : 0.;
+}
+
+template <int dim>
+std::vector<signed char> ContactConstraints<dim>::active_set() const
+{
+  std::vector<signed char> set(pairs.size(), 0);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    if (active[k])
+      set[k] = 2 + friction.states()[k];
+  return set;
 }
 
 template <int dim>
@@ -159,8 +209,8 @@ std::vector<bool> ContactConstraints<dim>::contact_dofs(const types::global_dof_
 template <int dim>
 void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
 {
-  // G^T lambda with G = dg/du: c_j n at the pair's nodes (-n on the slave node of body A). Only
-  // the normal constraint exists: one multiplier per pair (a tangential one needs its own rows).
+  // G^T lambda with G = dg/du: c_j n at the pair's nodes (-n on the slave node of body A); the
+  // tangential forces of pairs with friction below.
   for (unsigned int k = 0; k < pairs.size(); ++k)
     pairs[k].for_each_node(
         [&](const Node<dim>& node, const double coefficient)
@@ -169,6 +219,8 @@ void ContactConstraints<dim>::add_contact_forces(Vector<double>& force) const
             force[node.dofs[d]] +=
                 coefficient * pairs[k].normal[d] * multiplier_values[block.index(k)];
         });
+  if (friction.any())
+    friction.add_forces(active, multiplier_values, block, force);
 }
 
 template <int dim>
@@ -206,6 +258,16 @@ void ContactConstraints<dim>::assemble_constraint_rows(const Vector<double>& dis
           force_factor * multiplier_values[multiplier] / pairs[k].penalty_stiffness;
     }
   }
+  if (friction.any())
+    friction.assemble_rows(displacement,
+                           active,
+                           multiplier_values,
+                           block,
+                           formulation,
+                           inactive_diagonal,
+                           contact_border,
+                           rows,
+                           constraint_residual);
 }
 
 template <int dim>
@@ -245,6 +307,10 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
         multiplier_values[block.index(k, c)] = 0.;
       changed = true;
     }
+  if (friction.any())
+    changed = friction.update_states(
+                  displacement, active, multiplier_values, block, formulation, force_tolerance) ||
+              changed;
   return changed;
 }
 

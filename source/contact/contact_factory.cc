@@ -63,19 +63,44 @@ surface_contact(const typename ContactDescription<dim>::SurfacePair& surfaces,
   return nullptr;
 }
 
-/** The geometry of every described surface and plane pair: one, or a ContactGeometrySet. */
+/**
+ * The geometry of every described surface and plane pair: one, or a ContactGeometrySet; and into
+ * `friction_coefficients` the friction coefficient of each of its candidate pairs (the described
+ * pair's own, else Contact/friction coefficient).
+ */
 template <int dim>
 std::unique_ptr<ContactGeometry<dim>> surface_geometry(const ContactDescription<dim>& description,
                                                        const DoFHandler<dim>& dof_handler,
                                                        const Kinematics<dim>& kinematics,
                                                        const NodeIndex<dim>& nodes,
-                                                       const ContactParameters& parameters)
+                                                       const ContactParameters& parameters,
+                                                       std::vector<double>& friction_coefficients)
 {
   std::vector<std::unique_ptr<ContactGeometry<dim>>> members;
+  // The set's pairs are its members' in order (ContactGeometrySet).
+  const auto add_coefficients = [&](const std::optional<double>& own)
+  {
+    friction_coefficients.insert(friction_coefficients.end(),
+                                 members.back()->pairs().size(),
+                                 own.value_or(parameters.friction_coefficient));
+  };
   for (const auto& surfaces : description.surface_pairs)
     try
     {
+      // Not yet: the tangential rows of mortar's weighted gaps, and 3D node-to-surface (on the
+      // oblique spheres its semismooth Newton cycled through the active set at the first release).
+      const bool friction =
+          surfaces.friction_coefficient.value_or(parameters.friction_coefficient) > 0.;
+      if (friction &&
+          (parameters.discretization == ContactDiscretization::mortar ||
+           (dim == 3 && parameters.discretization != ContactDiscretization::node_to_node)))
+        throw InputError("friction is not implemented yet for Contact/discretization = " +
+                         contact_discretization_names().name(parameters.discretization) +
+                         (dim == 3 ? " in 3D" : "") +
+                         ": set its friction coefficient to 0, or use a rigid plane or "
+                         "node-to-node contact.");
       members.push_back(surface_contact(surfaces, dof_handler, kinematics, nodes, parameters));
+      add_coefficients(surfaces.friction_coefficient);
     }
     catch (const InputError& error)
     {
@@ -90,6 +115,7 @@ std::unique_ptr<ContactGeometry<dim>> surface_geometry(const ContactDescription<
           plane.normal,
           parameters.penalty_factor * plane.stiffness_modulus / plane.stiffness_length,
           plane.touching_tolerance));
+      add_coefficients(plane.friction_coefficient);
     }
     catch (const InputError& error)
     {
@@ -111,11 +137,18 @@ Contact<dim> build_contact(const ContactDescription<dim>& description,
   if (!description.surface_pairs.empty() || !description.plane_pairs.empty())
   {
     Assert(description.fixed_pairs.empty(), ExcMessage("surface contact or fixed pairs, not both"));
-    contact.surfaces = surface_geometry(description, dof_handler, kinematics, nodes, parameters);
-    contact.constraints =
-        std::make_unique<ContactConstraints<dim>>(*contact.surfaces, parameters.formulation);
+    std::vector<double> friction_coefficients;
+    contact.surfaces = surface_geometry(
+        description, dof_handler, kinematics, nodes, parameters, friction_coefficients);
+    contact.constraints = std::make_unique<ContactConstraints<dim>>(
+        *contact.surfaces, parameters.formulation, std::move(friction_coefficients));
     return contact;
   }
+  if (parameters.friction_coefficient > 0.)
+    throw InputError(
+        "Contact/friction coefficient = " + format_number(parameters.friction_coefficient) +
+        " is not allowed for bars: a bar has no tangential direction (friction is "
+        "for meshes); set it to 0.");
   std::vector<ContactPair<dim>> pairs;
   for (const auto& described : description.fixed_pairs)
   {

@@ -23,6 +23,17 @@ std::vector<double> parse_numbers(const std::string& text)
   }
   return numbers;
 }
+
+/** The friction coefficient `text` of the entry `entry`: a number >= 0; InputError otherwise. */
+double parse_friction_coefficient(const std::string& text, const std::string& entry)
+{
+  const std::vector<double> numbers = parse_numbers(text);
+  if (numbers.size() != 1 || !(numbers[0] >= 0.))
+    throw InputError(entry + " = '" + text +
+                     "' is not allowed: it must be a number >= 0 (Coulomb's mu; 0: "
+                     "frictionless).");
+  return numbers[0];
+}
 } // namespace
 
 const NameTable<ContactFormulation>& contact_formulation_names()
@@ -54,17 +65,26 @@ void ContactPairParameters::declare_parameters(ParameterHandler& prm)
                     "'r, z; n_r, n_z': a point on it [length] and its normal pointing toward the "
                     "body (normalized here), e.g. '0, 0; 0, 1' for the plane z = 0 below a body; "
                     "in 3D 'x, y, z; n_x, n_y, n_z', e.g. '0, 0, 0; 0, 0, 1'. Empty otherwise.");
+  prm.declare_entry("friction coefficient",
+                    "",
+                    Patterns::Anything(),
+                    "Coulomb's friction coefficient mu of this pair [-], a number >= 0; empty: "
+                    "Contact/friction coefficient.");
 }
 
 void ContactPairParameters::parse_parameters(ParameterHandler& prm,
                                              const std::string& source,
                                              const unsigned int dim)
 {
-  this->source           = source;
-  const auto slave       = prm.get_integer("slave boundary");
-  const auto master      = prm.get_integer("master boundary");
-  const std::string text = prm.get("rigid plane");
-  const bool has_plane   = text.find_first_not_of(" \t") != std::string::npos;
+  this->source               = source;
+  const auto slave           = prm.get_integer("slave boundary");
+  const auto master          = prm.get_integer("master boundary");
+  const std::string text     = prm.get("rigid plane");
+  const bool has_plane       = text.find_first_not_of(" \t") != std::string::npos;
+  const std::string friction = prm.get("friction coefficient");
+  friction_coefficient.reset();
+  if (friction.find_first_not_of(" \t") != std::string::npos)
+    friction_coefficient = parse_friction_coefficient(friction, source + "/friction coefficient");
   if (slave < 1)
     throw InputError(source + "/slave boundary = " + std::to_string(slave) +
                      " is not allowed: it must be a boundary id >= 1 (a gmsh physical curve "
@@ -147,6 +167,18 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
       "sliding between flat faces at strains far beyond small strain (a mode grows from "
       "round-off and stops the run, doc/method.md 4.2). All three are the same on matching flat "
       "faces.");
+  prm.declare_entry(
+      "friction coefficient",
+      "0",
+      Patterns::Anything(),
+      "Coulomb's friction coefficient mu [-] of every contact pair that does not give its own "
+      "(Pair k/friction coefficient), a number >= 0; 0: frictionless. With friction a pair's "
+      "tangential force lambda_t obeys |lambda_t| <= mu lambda_n, opposite to the slip when it "
+      "slides; stick and slip are decided inside Newton (a semismooth Newton on the NCP function "
+      "of Hueber, Stadler & Wohlmuth 2008; doc/method.md, section 7). Meshes only (2D: in the "
+      "r-z or x-y plane; 3D: both tangential directions): rigid planes, node-to-node, 2D "
+      "node-to-segment; with Contact/dynamics = none or "
+      "mass-redistribution. history.csv then has the column frictional_dissipation.");
   prm.declare_entry("penalty factor",
                     "auto",
                     Patterns::Anything(),
@@ -172,6 +204,8 @@ void ContactParameters::parse_parameters(ParameterHandler& prm, const unsigned i
   dynamics    = contact_dynamics_names().parse(prm.get("dynamics"), "Contact/dynamics");
   discretization =
       contact_discretization_names().parse(prm.get("discretization"), "Contact/discretization");
+  friction_coefficient =
+      parse_friction_coefficient(prm.get("friction coefficient"), "Contact/friction coefficient");
   const std::string factor = prm.get("penalty factor");
   automatic_penalty        = factor == "auto";
   penalty_factor           = quasi_static_penalty_factor;

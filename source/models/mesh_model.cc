@@ -181,7 +181,8 @@ ContactDescription<2> MeshModel::contact_description(const NodeIndex<2>&) const
                                            1e-6 * shortest_edge,
                                            search_radius(),
                                            touching_tolerance(),
-                                           source});
+                                           source,
+                                           pair.friction_coefficient});
     else
       description.plane_pairs.push_back(
           {pair.slave_boundary,
@@ -190,7 +191,8 @@ ContactDescription<2> MeshModel::contact_description(const NodeIndex<2>&) const
            stiffest,
            shortest_edge,
            touching_tolerance(),
-           source});
+           source,
+           pair.friction_coefficient});
   }
   return description;
 }
@@ -329,7 +331,8 @@ std::vector<ContactPairParameters> MeshModel::effective_pairs() const
                std::to_string(SphereMeshIds::surface(1)) +
                " of body 2, as in the sphere meshes; declare Contact/Pair 1 for others), Mesh/file "
                "= '" +
-               mesh.file + "'"}};
+               mesh.file + "'",
+           std::nullopt}};
 }
 
 std::optional<MeshModel::ImpactSide> MeshModel::impact_side(const types::boundary_id id) const

@@ -182,7 +182,8 @@ ContactDescription<3> SolidMeshModel::contact_description(const NodeIndex<3>&) c
                                          stiffest,
                                          shortest_edge,
                                          touching_tolerance(),
-                                         pair.source});
+                                         pair.source,
+                                         pair.friction_coefficient});
       continue;
     }
     const BoundarySurface& master =
@@ -200,7 +201,8 @@ ContactDescription<3> SolidMeshModel::contact_description(const NodeIndex<3>&) c
                                          1e-6 * shortest_edge,
                                          search_radius(slave.body, master.body),
                                          touching_tolerance(),
-                                         pair.source + " (Mesh/file = '" + mesh.file + "')"});
+                                         pair.source + " (Mesh/file = '" + mesh.file + "')",
+                                         pair.friction_coefficient});
   }
   return description;
 }

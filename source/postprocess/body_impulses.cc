@@ -90,7 +90,8 @@ void BodyImpulses<dim>::start(const StepState& state)
   accumulated.forces = forces(state, true);
   accumulated.impulses.assign(n_tracks(), 0.);
   accumulated.contact_impulses.assign(n_tracks(), 0.);
-  accumulated.external_work = 0.;
+  accumulated.external_work          = 0.;
+  accumulated.frictional_dissipation = 0.;
 }
 
 template <int dim>
@@ -204,6 +205,11 @@ void BodyImpulses<dim>::accumulate(const StepState& start,
   impulses                  = impulse_sums;
   contact_part              = contact_sums;
   accumulated.external_work = work_sum[0];
+  // The tangential forces weighted as the external ones: Newmark's old and new forces by
+  // 1 - gamma and gamma, a dissipative member's one force of its balance by 1.
+  if (contact.has_friction())
+    accumulated.frictional_dissipation += contact.frictional_dissipation(
+        contact.border().gather(state.displacement), step_load.size() > 0 ? 1. : gamma);
 }
 
 template <int dim>

@@ -118,6 +118,14 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
   measures.momenta         = body_impulses.along_impact(measures.momentum_tracks);
   if (dim == 3) // history.csv has these columns in 3D only
     measure_momentum(state, measures);
+  else if (measures.momentum_tracks.size() == measures.momenta.size() * dim)
+    // Plane strain: the tracks are x and y of each body (StepRecorder::has_body_momenta()).
+    for (unsigned int b = 0; b < measures.momenta.size(); ++b)
+    {
+      measures.body_momenta.emplace_back();
+      for (unsigned int d = 0; d < dim; ++d)
+        measures.body_momenta[b][d] = measures.momentum_tracks[b * dim + d];
+    }
   return measures;
 }
 

@@ -84,6 +84,8 @@ std::vector<std::string> StepRecorder<dim>::columns() const
   if (dim > 1)
     for (const std::string column : {"contact_radius", "centre_pressure"})
       columns.push_back(column);
+  if (contact.has_friction())
+    columns.push_back("frictional_dissipation");
   if (dim == 3)
     for (const std::string quantity : {"momentum_", "angular_momentum_"})
       for (const std::string axis : {"x", "y", "z"})
@@ -91,10 +93,10 @@ std::vector<std::string> StepRecorder<dim>::columns() const
   for (unsigned int b = 1; b <= model.n_bodies(); ++b)
     for (const std::string quantity : {"momentum_", "impulse_", "u_tip_", "v_tip_", "a_tip_"})
       columns.push_back(quantity + std::to_string(b));
-  if (dim == 3)
+  if (has_body_momenta())
     for (unsigned int b = 1; b <= model.n_bodies(); ++b)
-      for (const std::string axis : {"x", "y", "z"})
-        columns.push_back("momentum_" + std::to_string(b) + "_" + axis);
+      for (unsigned int d = 0; d < dim; ++d)
+        columns.push_back("momentum_" + std::to_string(b) + "_" + "xyz"[d]);
   return columns;
 }
 
@@ -112,7 +114,8 @@ void StepRecorder<dim>::record(const Step& step,
                                const Measures& measures,
                                const StepState& state,
                                const std::vector<double>& impulses,
-                               const double external_work)
+                               const double external_work,
+                               const double frictional_dissipation)
 {
   std::vector<double> row = {step.time,
                              measures.contact_force,
@@ -140,6 +143,8 @@ void StepRecorder<dim>::record(const Step& step,
     row.push_back(fields.contact_radius(state.displacement));
     row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
   }
+  if (contact.has_friction())
+    row.push_back(frictional_dissipation);
   if (dim == 3)
     for (const Tensor<1, max_dimension>& vector : {measures.momentum, measures.angular_momentum})
       for (unsigned int d = 0; d < max_dimension; ++d)
@@ -148,9 +153,10 @@ void StepRecorder<dim>::record(const Step& step,
   for (unsigned int b = 0; b < monitors.size(); ++b)
     row.insert(row.end(),
                {measures.momenta[b], impulses[b], tips[3 * b], tips[3 * b + 1], tips[3 * b + 2]});
-  for (const Tensor<1, max_dimension>& momentum : measures.body_momenta)
-    for (unsigned int d = 0; d < max_dimension; ++d)
-      row.push_back(momentum[d]);
+  if (has_body_momenta())
+    for (const Tensor<1, max_dimension>& momentum : measures.body_momenta)
+      for (unsigned int d = 0; d < dim; ++d)
+        row.push_back(momentum[d]);
   rows.add_row(row);
   write_fields(rows.n_rows() - 1, step.nominal_step, step.time, state, pressures);
 }

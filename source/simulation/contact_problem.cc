@@ -34,6 +34,12 @@ ContactProblem<dim>::ContactProblem(ProblemModel<dim>& model,
   penalty_factor  = built.penalty_factor;
   penalty_lowered = built.penalty_lowered_to_resolve_springs;
   dynamics        = create_contact_dynamics<dim>(parameters.contact.dynamics);
+  if (contact->has_friction() && !dynamics->carries_friction())
+    throw InputError(
+        "Contact/dynamics = " + contact_dynamics_names().name(parameters.contact.dynamics) +
+        " does not carry friction (yet): with a friction coefficient > 0 choose "
+        "Contact/dynamics = mass-redistribution or none.");
+  contact->set_fixed_dofs(contact->border().gather(d.is_fixed_dof));
   contact->set_turning_normals(dynamics->turns_normals());
   // The multipliers as the contact force of the balance the step solves, on every integrator and
   // treatment (doc/method.md, "Contact forces on every integrator").

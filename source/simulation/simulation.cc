@@ -109,7 +109,8 @@ void Simulation<dim>::record(const Measures& measures,
                    measures,
                    problem->stepper->state(),
                    impulses.along_impact(impulses.ledger().impulses),
-                   impulses.ledger().external_work);
+                   impulses.ledger().external_work,
+                   impulses.ledger().frictional_dissipation);
 }
 
 template <int dim>

@@ -69,7 +69,8 @@ StepGuards::Figures StepAcceptance<dim>::figures(const double time, const Measur
           measures.momentum_tracks,
           impulses.ledger().impulses,
           measures.momentum_magnitude,
-          measures.kinetic_energy + measures.strain_energy};
+          measures.kinetic_energy + measures.strain_energy,
+          impulses.ledger().frictional_dissipation};
 }
 
 template <int dim>

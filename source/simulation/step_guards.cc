@@ -19,6 +19,7 @@ void StepGuards::initialize(const Figures& initial)
   initial_plain_energy = initial.plain_energy;
   initial_momenta      = initial.momenta;
   energy_scale         = std::abs(initial.energy);
+  accepted_dissipation = initial.frictional_dissipation;
   force_scale          = 0.;
   momentum_scale       = initial.momentum_magnitude;
 }
@@ -45,18 +46,39 @@ std::pair<std::string, double> StepGuards::violation(const Guard guard, const Fi
     // start at rest, so that a blow-up is measured against the start, not against itself.
     const double scale = std::max(initial_energy != 0. ? std::abs(initial_energy) : energy_scale,
                                   std::abs(step.external_work));
+    // Friction dissipates: a step whose tangential forces did positive work fails.
+    const double friction_work =
+        scale > 0. ? (accepted_dissipation - step.frictional_dissipation) / scale : 0.;
+    if (friction_work > parameters.energy_tolerance)
+    {
+      reason << "energy guard: friction did positive work in the step, "
+             << accepted_dissipation - step.frictional_dissipation << ", " << friction_work
+             << " of the energy scale (Guards/energy tolerance = " << parameters.energy_tolerance
+             << ")";
+      return {reason.str(), friction_work};
+    }
+    // E + D: the energy friction dissipated is gone from E and counted in D.
     const double gain =
-        scale > 0. ? (step.energy - initial_energy - step.external_work) / scale : 0.;
+        scale > 0.
+            ? (step.energy + step.frictional_dissipation - initial_energy - step.external_work) /
+                  scale
+            : 0.;
     if (gain > parameters.energy_tolerance)
     {
-      reason << "energy guard: the algorithmic energy " << step.energy << " exceeds the initial "
-             << initial_energy << " plus the external work " << step.external_work << " by " << gain
+      reason << "energy guard: the algorithmic energy " << step.energy
+             << (step.frictional_dissipation != 0. ? " plus the frictional dissipation " +
+                                                         format_number(step.frictional_dissipation)
+                                                   : std::string())
+             << " exceeds the initial " << initial_energy << " plus the external work "
+             << step.external_work << " by " << gain
              << " of the energy scale (Guards/energy tolerance = " << parameters.energy_tolerance
              << ")";
       return {reason.str(), gain};
     }
-    const double plain_gain =
-        scale > 0. ? (step.plain_energy - initial_plain_energy - step.external_work) / scale : 0.;
+    const double plain_gain = scale > 0. ? (step.plain_energy + step.frictional_dissipation -
+                                            initial_plain_energy - step.external_work) /
+                                               scale
+                                         : 0.;
     if (!plain_energy_checked || plain_gain <= parameters.plain_energy_tolerance)
       return {"", 0.};
     reason << "energy guard: the plain energy (kinetic + strain) " << step.plain_energy
@@ -129,9 +151,10 @@ void StepGuards::accept(const Figures& step)
       }
       record.largest = std::max(record.largest, amount);
     }
-  energy_scale   = std::max(energy_scale, std::abs(step.energy));
-  force_scale    = std::max(force_scale, std::abs(step.contact_force));
-  momentum_scale = std::max(momentum_scale, step.momentum_magnitude);
+  accepted_dissipation = step.frictional_dissipation;
+  energy_scale         = std::max(energy_scale, std::abs(step.energy));
+  force_scale          = std::max(force_scale, std::abs(step.contact_force));
+  momentum_scale       = std::max(momentum_scale, step.momentum_magnitude);
 }
 
 std::vector<std::string> StepGuards::warnings() const

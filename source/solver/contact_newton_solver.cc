@@ -44,10 +44,10 @@ struct ContactNewtonSolver<dim>::Iteration
   /** Backtracking line search: the state before the last update, the update and its fraction. */
   std::optional<StateBeforeUpdate> before_update = {};
   /** Modified Newton: the active set at which this step's tangent was assembled (empty: none). */
-  std::optional<std::vector<bool>> tangent_active_set = {};
-  DistributedVector newton_update                     = {}; ///< of the displacement, owned DoFs
-  Vector<double> multiplier_update                    = {};
-  double step_length                                  = 1.;
+  std::optional<std::vector<signed char>> tangent_active_set = {};
+  DistributedVector newton_update  = {}; ///< of the displacement, owned DoFs
+  Vector<double> multiplier_update = {};
+  double step_length               = 1.;
 };
 
 template <int dim>
@@ -145,7 +145,7 @@ ContactNewtonSolver<dim>::solve(const DistributedVector& predictor,
         evaluation = evaluate(iteration, true); // a fresh tangent at the same iterate
         throw_if_stuck(iteration, evaluation);
       }
-      iteration.tangent_active_set = contact.state().active;
+      iteration.tangent_active_set = contact.active_set();
     }
 
     assembly_scope.stop();
@@ -165,7 +165,7 @@ template <int dim>
 bool ContactNewtonSolver<dim>::may_reuse_tangent(const Iteration& iteration) const
 {
   return parameters.method == NewtonMethod::modified && iteration.tangent_active_set &&
-         *iteration.tangent_active_set == contact.state().active;
+         *iteration.tangent_active_set == contact.active_set();
 }
 
 template <int dim>

@@ -34,8 +34,10 @@ void check(const int error_code, const char* package, const char* phase)
 }
 } // namespace
 
-DirectSolver::DirectSolver(const DirectSolverPackage package, const MPI_Comm communicator)
-    : package(package), communicator(communicator)
+DirectSolver::DirectSolver(const DirectSolverPackage package,
+                           const MPI_Comm communicator,
+                           const bool symmetric)
+    : package(package), communicator(communicator), symmetric(symmetric)
 {
   if (package == DirectSolverPackage::umfpack &&
       dealii::Utilities::MPI::n_mpi_processes(communicator) > 1)
@@ -61,7 +63,7 @@ void DirectSolver::analyse(const TrilinosWrappers::SparseMatrix& matrix)
   }
   else if (package == DirectSolverPackage::mumps)
   {
-    mumps = std::make_unique<MumpsSolver>(communicator);
+    mumps = std::make_unique<MumpsSolver>(communicator, symmetric);
     mumps->analyse(epetra);
   }
   else

@@ -97,12 +97,13 @@ std::vector<int> nested_dissection_on_host(const std::vector<int>& rows,
 }
 } // namespace
 
-MumpsSolver::MumpsSolver(const MPI_Comm communicator)
-    : communicator(communicator), instance(std::make_unique<Instance>())
+MumpsSolver::MumpsSolver(const MPI_Comm communicator, const bool symmetric)
+    : communicator(communicator), instance(std::make_unique<Instance>()), symmetric(symmetric)
 {
   instance->comm_fortran = static_cast<MUMPS_INT>(MPI_Comm_c2f(communicator));
   instance->par          = 1; // the host works too
-  instance->sym          = 2; // symmetric, possibly indefinite: LDL^T with 2x2 pivots
+  // Symmetric, possibly indefinite: LDL^T with 2x2 pivots; else LU.
+  instance->sym = symmetric ? 2 : 0;
   run(-1, "initialization");
   // No output from MUMPS: errors are reported as SolverFailure.
   instance->ICNTL(1)  = -1;
@@ -145,7 +146,7 @@ void MumpsSolver::analyse(const Epetra_CrsMatrix& matrix)
   for_each_entry(matrix,
                  [&](const long long row, const long long column, double)
                  {
-                   if (column < row)
+                   if (column < row && symmetric)
                      return;
                    rows.push_back(static_cast<int>(row + 1));
                    columns.push_back(static_cast<int>(column + 1));
@@ -169,8 +170,16 @@ void MumpsSolver::analyse(const Epetra_CrsMatrix& matrix)
   // Debian's MUMPS has no METIS or SCOTCH (ICNTL(7) = 3 or 5 silently fall back to AMF, as
   // INFOG(7) = 2 shows); deal.II's METIS orders instead. Nested dissection suits 2D and 3D
   // meshes: the factors and flops grow as n log n and n^1.5 in 2D.
+  // The order from the entries on and above the diagonal (the pattern is structurally symmetric).
+  std::vector<int> upper_rows, upper_columns;
+  for (std::size_t k = 0; k < rows.size(); ++k)
+    if (columns[k] >= rows[k])
+    {
+      upper_rows.push_back(rows[k]);
+      upper_columns.push_back(columns[k]);
+    }
   const std::vector<int> perm_in =
-      nested_dissection_on_host(rows, columns, instance->n, communicator);
+      nested_dissection_on_host(upper_rows, upper_columns, instance->n, communicator);
   instance->perm_in = const_cast<int*>(perm_in.data());
   // Distributed input (ICNTL(18) = 3) with a given order: the analysis reads no values.
   instance->a_loc = nullptr;
@@ -187,7 +196,7 @@ void MumpsSolver::factorize(const Epetra_CrsMatrix& matrix)
   for_each_entry(matrix,
                  [&](const long long row, const long long column, const double value)
                  {
-                   if (column >= row)
+                   if (column >= row || !symmetric)
                      values.push_back(value);
                  });
   AssertDimension(values.size(), rows.size());

@@ -48,6 +48,12 @@ DynamicSparsityPattern written_rows_pattern(const DoFHandler<dim>& dof_handler,
         contact_couplings.add(n_dofs + multiplier, dof);
         contact_couplings.add(dof, n_dofs + multiplier);
       });
+  // A pair's multipliers couple among themselves (a sliding pair's tangential rows, friction).
+  const MultiplierBlock& block = contact.multiplier_block();
+  for (unsigned int k = 0; k < block.n_pairs(); ++k)
+    for (unsigned int a = 0; a < block.n_components(k); ++a)
+      for (unsigned int b = 0; b < block.n_components(k); ++b)
+        contact_couplings.add(n_dofs + block.index(k, a), n_dofs + block.index(k, b));
   // Rows by row_length() and column_number(), both O(1): DynamicSparsityPattern::begin(row) of an
   // empty row searches on to the next non-empty one, which made this quadratic in the DoFs.
   if (owns_multiplier_rows)
@@ -97,7 +103,7 @@ SaddlePointSystem<dim>::SaddlePointSystem(const DoFHandler<dim>& dof_handler,
       multiplier_rows_owner(Utilities::MPI::this_mpi_process(communicator) ==
                             Utilities::MPI::n_mpi_processes(communicator) - 1),
       locally_owned_dofs(dof_handler.locally_owned_dofs()), constraints(constraints),
-      direct_solver(package, communicator)
+      direct_solver(package, communicator, !contact.has_friction())
 {
   const types::global_dof_index n_total = n_dofs + n_multipliers;
   locally_owned_rows.set_size(n_total);
@@ -147,6 +153,32 @@ void SaddlePointSystem<dim>::add_coupling(const unsigned int multiplier,
     return;
   system_matrix.add(n_dofs + multiplier, dof, value);
   system_matrix.add(dof, n_dofs + multiplier, value);
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::add_row_coupling(const unsigned int multiplier,
+                                              const types::global_dof_index dof,
+                                              const double value)
+{
+  if (!constraints.is_constrained(dof))
+    system_matrix.add(n_dofs + multiplier, dof, value);
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::add_column_coupling(const unsigned int multiplier,
+                                                 const types::global_dof_index dof,
+                                                 const double value)
+{
+  if (!constraints.is_constrained(dof))
+    system_matrix.add(dof, n_dofs + multiplier, value);
+}
+
+template <int dim>
+void SaddlePointSystem<dim>::add_multiplier_coupling(const unsigned int multiplier,
+                                                     const unsigned int other,
+                                                     const double value)
+{
+  system_matrix.add(n_dofs + multiplier, n_dofs + other, value);
 }
 
 template <int dim>

@@ -51,6 +51,24 @@ struct DenseRows : MultiplierRows
     matrix(n_dofs + multiplier, dof) += value;
     matrix(dof, n_dofs + multiplier) += value;
   }
+  void add_row_coupling(const unsigned int multiplier,
+                        const types::global_dof_index dof,
+                        const double value) override
+  {
+    matrix(n_dofs + multiplier, dof) += value;
+  }
+  void add_column_coupling(const unsigned int multiplier,
+                           const types::global_dof_index dof,
+                           const double value) override
+  {
+    matrix(dof, n_dofs + multiplier) += value;
+  }
+  void add_multiplier_coupling(const unsigned int multiplier,
+                               const unsigned int other,
+                               const double value) override
+  {
+    matrix(n_dofs + multiplier, n_dofs + other) += value;
+  }
   void add_diagonal(const unsigned int multiplier, const double value) override
   {
     matrix(n_dofs + multiplier, n_dofs + multiplier) += value;
@@ -251,7 +269,7 @@ TEST(ContactFields, EventWorkIsHalfTheForceTimesTheGapTheEventCrosses)
   old_u[1] = -0.02;
   Vector<double> old_multipliers(3);
   old_multipliers[1] = 4., old_multipliers[2] = 5.;
-  const typename ContactConstraints<2>::State old{{false, true, true}, old_multipliers};
+  const typename ContactConstraints<2>::State old{{false, true, true}, old_multipliers, {0, 0, 0}};
   // Its end: pair 0 closed with force 3, pair 1 open at the gap 0.01, pair 2 still closed.
   new_u[3] = -0.01;
   Vector<double> penetrating(6);

@@ -5,6 +5,7 @@
 #include <dyncontact/contact/contact_geometry.h>
 #include <dyncontact/contact/contact_pair.h>
 #include <dyncontact/contact/contact_parameters.h>
+#include <dyncontact/contact/coulomb_friction.h>
 #include <dyncontact/contact/multiplier_block.h>
 #include <dyncontact/discretization/node_index.h>
 
@@ -56,6 +57,14 @@ public:
   ContactConstraints(std::vector<ContactPair<dim>> pairs, ContactFormulation formulation);
 
   /**
+   * The `geometry`'s pairs as below, each with its friction coefficient [-] (>= 0; one per pair:
+   * CoulombFriction). A pair with friction owns dim multipliers, the normal one first.
+   */
+  ContactConstraints(const ContactGeometry<dim>& geometry,
+                     ContactFormulation formulation,
+                     std::vector<double> friction_coefficients);
+
+  /**
    * The pairs of `geometry`, which follow the current configuration (update_geometry()); the
    * border is every node a pair may couple (ContactGeometry::coupled_nodes()) and every node of
    * the geometry's surfaces (ContactGeometry::surface_nodes()). The geometry must
@@ -66,9 +75,46 @@ public:
 
   /**
    * For pairs of a ContactGeometry: moves every pair to `displacement` (a border vector;
-   * ContactGeometry::update_pairs()). Does nothing for fixed pairs.
+   * ContactGeometry::update_pairs()); fixed pairs stay. With friction, a step starts here: the
+   * pairs' nodes, weights and tangent bases and the multipliers are those the step's slip is
+   * measured from (CoulombFriction::start_step()).
    */
   void update_geometry(const Vector<double>& displacement);
+
+  /** Whether any pair has friction (the saddle-point matrix is then unsymmetric). */
+  bool has_friction() const { return friction.any(); }
+
+  /** The friction coefficient of candidate `pair` [-] (0: frictionless). */
+  double friction_coefficient(unsigned int pair) const
+  {
+    return friction.any() ? friction.coefficient(pair) : 0.;
+  }
+
+  /**
+   * The border DoFs held at zero (one flag per border DoF: a symmetry plane, the axis): a
+   * tangential direction that only they could move carries no friction multiplier.
+   */
+  void set_fixed_dofs(std::vector<bool> fixed) { friction.set_fixed_dofs(std::move(fixed)); }
+
+  /**
+   * Whether candidate `pair` slides: active, with friction, on the slip branch of Coulomb's law
+   * (CoulombFriction).
+   */
+  bool is_sliding(unsigned int pair) const { return active[pair] && friction.states()[pair] != 0; }
+
+  /**
+   * The energy friction dissipated over the step that started at the last update_geometry(), at
+   * the border displacement `displacement` [energy]: minus the work of the tangential forces
+   * weighted as the integrator weighs the step's old and new forces (`new_weight`, the new one's;
+   * CoulombFriction::dissipation()); 0 without friction.
+   */
+  double frictional_dissipation(const Vector<double>& displacement, double new_weight) const;
+
+  /**
+   * The active set with the friction branches, per pair: 0 inactive, 2 active and stuck (or
+   * frictionless), 1 or 3 sliding (the 2D slip direction); what a Newton tangent depends on.
+   */
+  std::vector<signed char> active_set() const;
 
   /**
    * For pairs of a ContactGeometry: moves every pair's master point to `displacement` (a border
@@ -128,12 +174,14 @@ public:
   {
     std::vector<bool> active;
     Vector<double> multipliers;
+    std::vector<signed char> slip_states; ///< CoulombFriction::states()
   };
-  State state() const { return {active, multiplier_values}; }
+  State state() const { return {active, multiplier_values, friction.states()}; }
   void restore(const State& saved)
   {
     active            = saved.active;
     multiplier_values = saved.multipliers;
+    friction.set_states(saved.slip_states);
   }
 
   /** Gap of candidate `pair` at the border displacement u (negative = penetration) [length]. */
@@ -171,7 +219,10 @@ public:
    */
   std::vector<bool> contact_dofs(types::global_dof_index n_dofs) const;
 
-  /** Adds the contact forces G^T lambda on the bodies to the border vector `force`. */
+  /**
+   * Adds the contact forces G^T lambda on the bodies to the border vector `force`, the tangential
+   * ones of pairs with friction included.
+   */
   void add_contact_forces(Vector<double>& force) const;
 
   /**
@@ -179,9 +230,10 @@ public:
    * into `constraint_residual` (one per multiplier) at the border displacement `displacement`: -g
    * (Lagrange) or -g - lambda/eps (penalty) for active pairs, lambda for inactive ones with
    * diagonal `inactive_diagonal`; a penalty pair's row is -g - f lambda / eps, f the force per
-   * multiplier, so that its force f lambda is eps <-g>. The update is (delta u, delta lambda) =
-   * matrix^{-1} (-residual). A null `rows` computes the residuals only (ranks that do not own
-   * the constraint rows).
+   * multiplier, so that its force f lambda is eps <-g>. A pair with friction adds its tangential
+   * rows (CoulombFriction::assemble_rows(); a sliding pair's are not symmetric). The update is
+   * (delta u, delta lambda) = matrix^{-1} (-residual). A null `rows` computes the residuals only
+   * (ranks that do not own the constraint rows).
    */
   void assemble_constraint_rows(const Vector<double>& displacement,
                                 double inactive_diagonal,
@@ -198,7 +250,8 @@ public:
    * (contact_pressures()) is still compressive: a node whose consistent share of a compressive
    * pressure is zero or negative (the axis node of an axisymmetric Q2 surface has zero tributary
    * area) may carry a slightly tensile multiplier while its surroundings are pressed together.
-   * Returns whether anything changed.
+   * Then decides stick or slip for the active pairs with friction (CoulombFriction::update_states()
+   * with `force_tolerance`). Returns whether anything changed.
    */
   bool update_active_set(const Vector<double>& displacement,
                          double gap_tolerance,
@@ -251,7 +304,8 @@ private:
   Vector<double> multiplier_values;
   std::vector<bool> held_gaps;  ///< hold_gaps(): empty, none
   Vector<double> gap_reference; ///< hold_gaps(): the configuration whose gaps are held
-  double force_factor  = 1.;    ///< see set_force_per_multiplier()
-  bool turning_normals = true;  ///< see set_turning_normals()
+  CoulombFriction<dim> friction;
+  double force_factor  = 1.;   ///< see set_force_per_multiplier()
+  bool turning_normals = true; ///< see set_turning_normals()
 };
 } // namespace dyncontact

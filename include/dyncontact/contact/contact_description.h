@@ -51,6 +51,8 @@ struct ContactDescription
     double search_radius;
     double touching_tolerance; ///< [length], a gap above -this at t = 0 is touching, not overlap
     std::string source;        ///< what errors name, e.g. "Mesh/file = 'two_spheres.geo'"
+    /// the pair's own Coulomb friction coefficient [-]; empty: Contact/friction coefficient
+    std::optional<double> friction_coefficient = {};
   };
 
   /** A boundary against a rigid, fixed plane (RigidPlaneContact). */
@@ -64,6 +66,8 @@ struct ContactDescription
     double stiffness_length;   ///< [length], e.g. the shortest cell edge
     double touching_tolerance; ///< [length], a gap above -this at t = 0 is touching, not overlap
     std::string source;        ///< what errors name, e.g. "Contact/Pair 2"
+    /// the pair's own Coulomb friction coefficient [-]; empty: Contact/friction coefficient
+    std::optional<double> friction_coefficient = {};
   };
 
   std::vector<FixedPair> fixed_pairs;

@@ -44,10 +44,13 @@ struct ContactPairParameters
   std::optional<RigidPlane> rigid_plane;
   /// what errors name: "Contact/Pair k"
   std::string source;
+  /// Coulomb friction coefficient of this pair [-], >= 0; empty: Contact/friction coefficient
+  std::optional<double> friction_coefficient;
 
   static void declare_parameters(ParameterHandler& prm);
   /** Throws InputError (naming `source`) for ids below 2, equal ids, or not exactly one of
-   * master boundary and rigid plane, or a malformed plane (not `dim` coordinates each). */
+   * master boundary and rigid plane, a malformed plane (not `dim` coordinates each), or a
+   * friction coefficient that is not a number >= 0. */
   void parse_parameters(ParameterHandler& prm, const std::string& source, unsigned int dim);
 };
 
@@ -68,6 +71,9 @@ struct ContactParameters
   /// Contact/dynamics when not given: mass redistribution, on the trapezoidal rule with its contact
   /// events resolved (doc/schemes.md, "The default")
   static constexpr ContactDynamicsKind default_dynamics = ContactDynamicsKind::mass_redistribution;
+  /// Coulomb friction coefficient [-] of every pair that does not give its own, >= 0 (0:
+  /// frictionless)
+  double friction_coefficient = 0.;
   /// Contact/Pair 1, 2, ... (mesh problems); empty: the model's default pairing
   std::vector<ContactPairParameters> pairs;
 

@@ -37,9 +37,10 @@ private:
 };
 
 /**
- * Where the contact layer writes its rows and columns of the symmetric saddle-point matrix,
- * by multiplier (MultiplierBlock) and displacement DoF; the matrix's owner (SaddlePointSystem)
- * knows where the multipliers' rows are.
+ * Where the contact layer writes its rows and columns of the saddle-point matrix, by multiplier
+ * (MultiplierBlock) and displacement DoF; the matrix's owner (SaddlePointSystem) knows where the
+ * multipliers' rows are. The matrix is symmetric unless a pair has friction: a sliding pair's
+ * tangential row (CoulombFriction) differs from its column, and couples its pair's multipliers.
  */
 class MultiplierRows
 {
@@ -48,6 +49,21 @@ public:
 
   /** Adds `value` at (multiplier row, `dof`) and at (`dof`, multiplier column), in that order. */
   virtual void add_coupling(unsigned int multiplier, types::global_dof_index dof, double value) = 0;
+
+  /** Adds `value` at (multiplier row, `dof`) only. */
+  virtual void
+  add_row_coupling(unsigned int multiplier, types::global_dof_index dof, double value) = 0;
+
+  /** Adds `value` at (`dof`, multiplier column) only. */
+  virtual void
+  add_column_coupling(unsigned int multiplier, types::global_dof_index dof, double value) = 0;
+
+  /**
+   * Adds `value` at (row of `multiplier`, column of `other`), two multipliers of the same pair
+   * (any two of a pair are in the pattern).
+   */
+  virtual void
+  add_multiplier_coupling(unsigned int multiplier, unsigned int other, double value) = 0;
 
   /** Adds `value` on the diagonal of `multiplier`'s row. */
   virtual void add_diagonal(unsigned int multiplier, double value) = 0;

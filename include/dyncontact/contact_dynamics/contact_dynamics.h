@@ -55,6 +55,14 @@ public:
    */
   virtual bool turns_normals() const { return true; }
 
+  /**
+   * Whether the treatment handles pairs with Coulomb friction (CoulombFriction) in its own
+   * paper's way; a run with friction refuses a treatment that does not. False by default: a
+   * treatment that corrects the normal rates only would leave the tangential ones of a stuck pair
+   * with their jumps, and its energy argument does not cover the tangential forces.
+   */
+  virtual bool carries_friction() const { return false; }
+
   /** The state at t_n a treatment may start a step from (border vectors). */
   struct StepStart
   {

@@ -37,6 +37,13 @@ class MassRedistribution : public ContactDynamics<dim>
 public:
   bool contact_nodes_massless() const override { return true; }
 
+  /**
+   * The contact nodes are massless in every direction, so their tangential rates, like the
+   * normal ones, follow from the displacements (Hager, Hueber & Wohlmuth 2008 carry Coulomb
+   * friction on such a modified mass).
+   */
+  bool carries_friction() const override { return true; }
+
   void correct_rates(const RateMap& rates,
                      const ContactConstraints<dim>& contact,
                      const Vector<double>& lumped_mass,

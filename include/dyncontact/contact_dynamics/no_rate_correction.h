@@ -12,6 +12,9 @@ namespace dyncontact
 template <int dim>
 class NoRateCorrection : public ContactDynamics<dim>
 {
-  // Every hook keeps its default: the classical scheme.
+public:
+  /** The classical scheme with friction: the tangential forces are the constraint's, no more. */
+  bool carries_friction() const override { return true; }
+  // Every other hook keeps its default: the classical scheme.
 };
 } // namespace dyncontact

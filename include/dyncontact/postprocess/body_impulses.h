@@ -44,6 +44,8 @@ public:
     Forces forces; ///< forces() at the current state
     std::vector<double> impulses, contact_impulses;
     double external_work = 0.;
+    /// the energy friction dissipated since t = 0 (ContactConstraints::frictional_dissipation())
+    double frictional_dissipation = 0.;
 
     template <class Archive>
     void serialize(Archive& archive, const unsigned int /*version*/)
@@ -53,6 +55,7 @@ public:
       archive& impulses;
       archive& contact_impulses;
       archive& external_work;
+      archive& frictional_dissipation;
     }
   };
 
@@ -97,8 +100,9 @@ public:
 
   /**
    * Adds the impulses of the step from `before` (its state and ledger) to `state`
-   * (Newmark-weighted forces plus rate corrections), total and contact, and the external work;
-   * `step_load` is W(t_{n+1-alpha_f}) of a dissipative member, empty for Newmark.
+   * (Newmark-weighted forces plus rate corrections), total and contact, the external work and
+   * the frictional dissipation, its forces weighted as the external ones; `step_load` is
+   * W(t_{n+1-alpha_f}) of a dissipative member, empty for Newmark.
    */
   void accumulate(const StepState& before,
                   const Ledger& before_ledger,

@@ -67,14 +67,16 @@ public:
 
   /**
    * Appends the row of `state` (its `measures`; `impulses` [force time], per body along the
-   * impact direction, and the `external_work` [energy] since t = 0) to the history, and writes
+   * impact direction, the `external_work` [energy] since t = 0 and, with friction, the
+   * `frictional_dissipation` [energy] since t = 0) to the history, and writes
    * the VTU frame (numbered by the row) and profiles scheduled at it. Collective.
    */
   void record(const Step& step,
               const Measures& measures,
               const StepState& state,
               const std::vector<double>& impulses,
-              double external_work);
+              double external_work,
+              double frictional_dissipation);
 
   /**
    * Writes the reference solution at the recorded times and the run's summary (rank 0), marked
@@ -88,6 +90,16 @@ public:
 
   /** The columns of history.csv. */
   std::vector<std::string> columns() const;
+
+  /**
+   * Whether the history has each body's momentum along every axis (momentum_b_x, ...): in 3D, and
+   * in a plane-strain run with friction, whose bodies slide along the plane.
+   */
+  bool has_body_momenta() const
+  {
+    return dim == 3 || (dim == 2 && contact.has_friction() &&
+                        model.momentum_directions().size() == static_cast<unsigned int>(dim));
+  }
   /** Every recorded row, one per accepted (sub-)step including t = 0. */
   const History& history() const { return rows; }
   /** The rows on the nominal time grid (uniform steps: what the Hertz comparison takes). */

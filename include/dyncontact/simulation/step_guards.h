@@ -51,15 +51,16 @@ public:
   /** What the guards read about one step (the state at its end). */
   struct Figures
   {
-    double time;                  ///< t_{n+1}
-    double energy;                ///< algorithmic energy at t_{n+1}
-    double external_work;         ///< work of the external forces since t = 0
-    double contact_force;         ///< recovered total contact force, compression positive
-    double multiplier_magnitude;  ///< sum of the active pairs' |force|
-    std::vector<double> momenta;  ///< per track (BodyImpulses: a body along a direction)
-    std::vector<double> impulses; ///< per track, accumulated since t = 0
-    double momentum_magnitude;    ///< sum of |m v| over every DoF (zero only at rest)
-    double plain_energy;          ///< kinetic + strain energy at t_{n+1}
+    double time;                        ///< t_{n+1}
+    double energy;                      ///< algorithmic energy at t_{n+1}
+    double external_work;               ///< work of the external forces since t = 0
+    double contact_force;               ///< recovered total contact force, compression positive
+    double multiplier_magnitude;        ///< sum of the active pairs' |force|
+    std::vector<double> momenta;        ///< per track (BodyImpulses: a body along a direction)
+    std::vector<double> impulses;       ///< per track, accumulated since t = 0
+    double momentum_magnitude;          ///< sum of |m v| over every DoF (zero only at rest)
+    double plain_energy;                ///< kinetic + strain energy at t_{n+1}
+    double frictional_dissipation = 0.; ///< energy friction dissipated since t = 0
   };
 
   /**
@@ -92,7 +93,7 @@ public:
   void serialize(Archive& archive, const unsigned int)
   {
     archive& initial_energy& initial_plain_energy& energy_scale& force_scale& momentum_scale&
-        initial_momenta;
+        initial_momenta& accepted_dissipation;
     for (Record& record : disabled_violations)
       archive& record.first_reason& record.first_time& record.largest;
   }
@@ -116,6 +117,7 @@ private:
   double energy_scale         = 0.;
   double force_scale          = 0.;
   double momentum_scale       = 0.;
+  double accepted_dissipation = 0.; ///< Figures::frictional_dissipation of the last accepted step
   std::vector<double> initial_momenta;
   std::vector<std::string> track_names;
   /** Per guard switched off: the first violation's text and time, and the largest amount. */

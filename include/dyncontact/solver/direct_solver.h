@@ -34,7 +34,11 @@ namespace dyncontact
 class DirectSolver
 {
 public:
-  DirectSolver(DirectSolverPackage package, MPI_Comm communicator);
+  /**
+   * `symmetric` false: the matrices are unsymmetric (with friction), and MUMPS factorizes LU
+   * instead of LDL^T; KLU and UMFPACK factorize LU always.
+   */
+  DirectSolver(DirectSolverPackage package, MPI_Comm communicator, bool symmetric = true);
 
   ~DirectSolver();
 
@@ -75,6 +79,7 @@ public:
 private:
   const DirectSolverPackage package;
   const MPI_Comm communicator;
+  const bool symmetric;
   unsigned int factorizations = 0;
   bool analysed               = false;
   /** Amesos (KLU): the problem holds the matrix; symbolic analysis once. */

@@ -35,6 +35,9 @@ namespace dyncontact
  * instead): ScaLAPACK has no LDL^T and factorized it as LU, and its triangular solves were the
  * slowest phase of a 2-rank step (doc/performance.md, "Contact geometry on the border").
  *
+ * With friction the matrix is unsymmetric (CoulombFriction's sliding rows): then SYM = 0 and every
+ * entry is passed (the constructor's `symmetric`).
+ *
  * Errors of MUMPS (a singular matrix: INFOG(1) = -10; out of memory) are thrown as SolverFailure
  * with MUMPS's error code; a factorization that ran out of its estimated workspace (INFOG(1) = -8
  * or -9) is retried with twice the relaxation (ICNTL(14)), up to three times.
@@ -42,8 +45,13 @@ namespace dyncontact
 class MumpsSolver
 {
 public:
-  /** Starts a MUMPS instance on all ranks of `communicator` (collective). */
-  explicit MumpsSolver(MPI_Comm communicator);
+  /**
+   * Starts a MUMPS instance on all ranks of `communicator` (collective). `symmetric` false: an
+   * unsymmetric matrix (SYM = 0, LU with pivoting, every entry passed; a structurally symmetric
+   * pattern, as SaddlePointSystem's with friction), whose pivot order is made from the entries
+   * on and above the diagonal as for a symmetric one.
+   */
+  MumpsSolver(MPI_Comm communicator, bool symmetric);
 
   /** Ends the MUMPS instance (collective). */
   ~MumpsSolver();
@@ -99,6 +107,7 @@ private:
   const MPI_Comm communicator;
   std::unique_ptr<Instance> instance;
   /** This rank's entries on and above the diagonal, 1-based global indices, in row order. */
+  const bool symmetric;
   std::vector<int> rows, columns;
   std::vector<double> values;
   /** This rank's rows of the matrix, 1-based: its rows of the right-hand sides. */

@@ -112,6 +112,14 @@ public:
    * constrained `dof`.
    */
   void add_coupling(unsigned int multiplier, types::global_dof_index dof, double value) override;
+  /** Adds `value` at (row of `multiplier`, `dof`); nothing for a constrained `dof`. */
+  void
+  add_row_coupling(unsigned int multiplier, types::global_dof_index dof, double value) override;
+  /** Adds `value` at (`dof`, column of `multiplier`); nothing for a constrained `dof`. */
+  void
+  add_column_coupling(unsigned int multiplier, types::global_dof_index dof, double value) override;
+  /** Adds `value` at (row of `multiplier`, column of `other`). */
+  void add_multiplier_coupling(unsigned int multiplier, unsigned int other, double value) override;
 
   /** Adds `value` on the diagonal of `multiplier`'s row. */
   void add_diagonal(unsigned int multiplier, double value) override;
