@@ -61,30 +61,7 @@ EndIf
 Geometry.CopyMeshingMethod = 1;
 theta = Angle * Pi / 180;
 
-// One half ball of radius R (cells N, NR, PoleGrading): built at the origin with its pole at -z,
-// mirrored, merged, sorted into its face on y = 0 and its sphere, then turned by ball_turn about
-// the y axis and moved to ball_centre[]. Leaves ball_volumes[], ball_y0[] and ball_sphere[]. The
-// previous ball has left the origin by then, so Coherence merges only this ball's mirror faces.
-Macro HalfBall
-  CentreZ = 0;
-  Include "quarter_ball.geo.inc";
-  mirrored[] = Symmetry {1, 0, 0, 0} { Duplicata { Volume{volumes[]}; } };
-  Coherence;
-  ball_volumes[] = {volumes[], mirrored[]};
-  ball_y0[] = {};
-  ball_sphere[] = {};
-  boundary[] = Abs(CombinedBoundary{ Volume{ball_volumes[]}; });
-  For k In {0 : #boundary[] - 1}
-    box[] = BoundingBox Surface{boundary[k]};
-    If (box[1] > -1e-9 * R && box[4] < 1e-9 * R)
-      ball_y0[] += {boundary[k]};
-    Else
-      ball_sphere[] += {boundary[k]};
-    EndIf
-  EndFor
-  Rotate {{0, 1, 0}, {0, 0, 0}, ball_turn} { Volume{ball_volumes[]}; }
-  Translate {ball_centre[0], ball_centre[1], ball_centre[2]} { Volume{ball_volumes[]}; }
-Return
+Include "half_ball.geo.inc";
 
 // Ball 1: pole turned from -z to +d (a half turn, then Angle), centre -(R1 + Gap / 2) d.
 R = R1; N = N1; NR = NR1;
