@@ -56,10 +56,11 @@ template <int dim>
 CoulombFriction<dim>::CoulombFriction(std::vector<double> coefficients)
     : coefficients(std::move(coefficients)), slip_states(this->coefficients.size(), 0)
 {
-  for (const double mu : this->coefficients)
+  for (unsigned int k = 0; k < this->coefficients.size(); ++k)
   {
-    AssertThrow(mu >= 0., ExcMessage("a negative friction coefficient"));
-    has_friction = has_friction || mu > 0.;
+    AssertThrow(this->coefficients[k] >= 0., ExcMessage("a negative friction coefficient"));
+    has_friction   = has_friction || this->coefficients[k] > 0.;
+    slip_states[k] = this->coefficients[k] > 0. ? 1 : 0; // pairs enter sliding (update_states())
   }
   AssertThrow(!has_friction || dim > 1, ExcMessage("friction needs a tangential direction"));
 }
@@ -100,16 +101,19 @@ void CoulombFriction<dim>::start_step(const std::vector<ContactPair<dim>>& pairs
     for (unsigned int d = 0; d < dim; ++d)
       fixed_axes[d] = !fixed_dofs.empty() && fixed_dofs[pairs[k].slave.dofs[d]];
     tangents[k] = tangent_basis<dim>(pairs[k].normal, fixed_axes);
-    // A direction the slave node cannot move along (its DoFs there fixed: a symmetry plane, the
-    // axis) carries no friction: its master point is held the same way by the symmetry, and the
-    // row's couplings to free master DoFs, if any, are small weights (a near-singular row).
+    // A direction the slave node cannot move along (mostly along its fixed DoFs: a symmetry
+    // plane, the axis) carries no friction: its master point is held the same way by the
+    // symmetry. Its row's couplings to free DoFs are small (the normal's tilt out of the plane, a
+    // master node's small weight): kept, the row is near-singular (measured on the oblique
+    // spheres: a tangential multiplier 1e-3 of the normal one along the symmetry plane's normal,
+    // and Newton stalled with the gap at 1e-7).
     for (unsigned int alpha = 0; alpha + 1 < dim; ++alpha)
     {
       double free_part = 0.;
       for (unsigned int d = 0; d < dim; ++d)
         if (!fixed_axes[d])
-          free_part += std::abs(tangents[k][alpha][d]);
-      free_direction[k][alpha] = free_part > 1e-12;
+          free_part += tangents[k][alpha][d] * tangents[k][alpha][d];
+      free_direction[k][alpha] = free_part > 0.5;
     }
   }
 }
@@ -289,7 +293,11 @@ bool CoulombFriction<dim>::update_states(const Vector<double>& u,
       continue;
     if (!active[k])
     {
-      slip_states[k] = 0;
+      // A pair enters sliding, its tangential force mu lambda_n = 0 at first: stick is taken
+      // once its normal force is there to hold it (entering stuck, a pair closing at the release
+      // of a sliding contact pulled its normal force tensile and left again, over and over, on
+      // the oblique spheres).
+      slip_states[k] = 1;
       continue;
     }
     const std::array<double, dim - 1> z = trial(k, u, multipliers, block, formulation);

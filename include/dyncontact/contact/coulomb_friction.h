@@ -122,7 +122,10 @@ public:
                      ContactFormulation formulation,
                      double force_tolerance);
 
-  /** Per pair: 0 stick (or no friction), +1 or -1 slip (2D: the sign of z; 3D: +1). */
+  /**
+   * Per pair: 0 stick (or no friction), +1 or -1 slip (2D: the sign of z; 3D: +1); an inactive pair
+   * with friction +1, the branch it enters on.
+   */
   const std::vector<signed char>& states() const { return slip_states; }
   void set_states(const std::vector<signed char>& states) { slip_states = states; }
 
