@@ -119,6 +119,17 @@ void CoulombFriction<dim>::start_step(const std::vector<ContactPair<dim>>& pairs
 }
 
 template <int dim>
+std::vector<Tensor<1, dim>> CoulombFriction<dim>::friction_directions(const unsigned int pair) const
+{
+  std::vector<Tensor<1, dim>> directions;
+  if (pair < tangents.size() && coefficients[pair] > 0.)
+    for (unsigned int alpha = 0; alpha + 1 < dim; ++alpha)
+      if (free_direction[pair][alpha])
+        directions.push_back(tangents[pair][alpha]);
+  return directions;
+}
+
+template <int dim>
 double CoulombFriction<dim>::slip(const unsigned int pair,
                                   const unsigned int alpha,
                                   const Vector<double>& u) const

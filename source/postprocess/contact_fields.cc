@@ -134,6 +134,18 @@ double ContactFields<dim>::max_active_normal_jump(const DistributedVector& field
 }
 
 template <int dim>
+double ContactFields<dim>::max_stick_jump(const DistributedVector& field) const
+{
+  const Vector<double> border_field = contact.border().gather(field);
+  double jump                       = 0.;
+  for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+    for (const Tensor<1, dim>& tangent : contact.stick_directions(k))
+      jump =
+          std::max(jump, std::abs(contact.candidate_pairs()[k].jump_along(tangent, border_field)));
+  return jump;
+}
+
+template <int dim>
 double ContactFields<dim>::contact_radius(const DistributedVector& displacement) const
 {
   const Vector<double> border_displacement = contact.border().gather(displacement);

@@ -18,8 +18,8 @@ StepMeasures<dim>::StepMeasures(const GeneralizedAlpha& integrator,
                                 const Tensor<1, dim>& impact_direction,
                                 const std::vector<Node<dim>>& nodes)
     : integrator(integrator), mass(lumped_mass), bodies(bodies), solver(solver), fields(contact),
-      dynamics(dynamics), stepper(stepper), body_impulses(body_impulses),
-      impact_direction(impact_direction), nodes(nodes)
+      contact_has_friction(contact.has_friction()), dynamics(dynamics), stepper(stepper),
+      body_impulses(body_impulses), impact_direction(impact_direction), nodes(nodes)
 {
 }
 
@@ -113,6 +113,11 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
     measures.force_imbalance   = force_factor * (side_forces.on_a - side_forces.on_b);
     measures.velocity_jump     = fields.max_active_normal_jump(velocity);
     measures.acceleration_jump = fields.max_active_normal_jump(acceleration);
+    if (contact_has_friction)
+    {
+      measures.stick_velocity_jump     = fields.max_stick_jump(velocity);
+      measures.stick_acceleration_jump = fields.max_stick_jump(acceleration);
+    }
   }
   measures.momentum_tracks = body_impulses.momenta(velocity);
   measures.momenta         = body_impulses.along_impact(measures.momentum_tracks);

@@ -85,7 +85,11 @@ std::vector<std::string> StepRecorder<dim>::columns() const
     for (const std::string column : {"contact_radius", "centre_pressure"})
       columns.push_back(column);
   if (contact.has_friction())
-    columns.push_back("frictional_dissipation");
+    for (const std::string column : {"sliding_pairs",
+                                     "frictional_dissipation",
+                                     "stick_velocity_jump",
+                                     "stick_acceleration_jump"})
+      columns.push_back(column);
   if (dim == 3)
     for (const std::string quantity : {"momentum_", "angular_momentum_"})
       for (const std::string axis : {"x", "y", "z"})
@@ -144,7 +148,16 @@ void StepRecorder<dim>::record(const Step& step,
     row.push_back(surface_contact ? pressures[innermost_pair] : 0.);
   }
   if (contact.has_friction())
-    row.push_back(frictional_dissipation);
+  {
+    unsigned int sliding = 0;
+    for (unsigned int k = 0; k < contact.n_pairs(); ++k)
+      sliding += contact.is_sliding(k) ? 1 : 0;
+    row.insert(row.end(),
+               {static_cast<double>(sliding),
+                frictional_dissipation,
+                measures.stick_velocity_jump,
+                measures.stick_acceleration_jump});
+  }
   if (dim == 3)
     for (const Tensor<1, max_dimension>& vector : {measures.momentum, measures.angular_momentum})
       for (unsigned int d = 0; d < max_dimension; ++d)

@@ -103,6 +103,17 @@ public:
   bool is_sliding(unsigned int pair) const { return active[pair] && friction.states()[pair] != 0; }
 
   /**
+   * The unit tangents along which candidate `pair` is stuck: active, with friction, on the stick
+   * branch (its tangent basis of the step's start, less the directions of fixed DoFs); empty
+   * otherwise. Across them the whole relative motion is constrained, as the normal one is.
+   */
+  std::vector<Tensor<1, dim>> stick_directions(unsigned int pair) const
+  {
+    return active[pair] && friction.states()[pair] == 0 ? friction.friction_directions(pair)
+                                                        : std::vector<Tensor<1, dim>>();
+  }
+
+  /**
    * The energy friction dissipated over the step that started at the last update_geometry(), at
    * the border displacement `displacement` [energy]: minus the work of the tangential forces
    * weighted as the integrator weighs the step's old and new forces (`new_weight`, the new one's;

@@ -84,6 +84,18 @@ struct ContactPair
     return master_side(field, 0.) - normal_component(slave, normal, field);
   }
 
+  /**
+   * [[f]] . d = sum_j c_j d . f_j over the pair's nodes: the master point's field minus the slave
+   * node's along `direction` (a wall at rest).
+   */
+  double jump_along(const Tensor<1, dim>& direction, const Vector<double>& field) const
+  {
+    double jump = 0.;
+    for_each_node([&](const Node<dim>& node, const double coefficient)
+                  { jump += coefficient * normal_component(node, direction, field); });
+    return jump;
+  }
+
   /** The gap g = reference_gap() + [[u]] at the displacement `u` (indexed by the nodes' DoFs). */
   double gap(const Vector<double>& u) const
   {

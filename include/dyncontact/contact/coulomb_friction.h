@@ -123,6 +123,12 @@ public:
                      double force_tolerance);
 
   /**
+   * The tangents of `pair` along which it carries friction (its basis of the step's start, less
+   * the directions of fixed DoFs): dim - 1 at most, none without friction.
+   */
+  std::vector<Tensor<1, dim>> friction_directions(unsigned int pair) const;
+
+  /**
    * Per pair: 0 stick (or no friction), +1 or -1 slip (2D: the sign of z; 3D: +1); an inactive pair
    * with friction +1, the branch it enters on.
    */

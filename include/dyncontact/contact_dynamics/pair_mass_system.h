@@ -11,9 +11,11 @@
 namespace dyncontact
 {
 /**
- * The pairs' normal constraints weighted by the inverse lumped mass: S = B M^-1 B^T (size: the
- * number of pairs), with B_kj = c_kj n_k^T the row of pair k over its nodes j (slave -1, master
- * nodes their weights; a wall has no node and infinite weight) and M the lumped nodal masses. The
+ * The pairs' constraints along their directions weighted by the inverse lumped mass:
+ * S = B M^-1 B^T (size: the number of rows), with B_rj = c_kj d_r^T the row r of pair k along the
+ * unit direction d_r over the pair's nodes j (slave -1, master nodes their weights; a wall has no
+ * node and infinite weight) and M the lumped nodal masses; d_r is the pair's normal n_k, or, for
+ * the rows of a stuck pair with friction, also its tangents (TaylorPapadopoulos). The
  * nodal changes M^-1 B^T mu that such a system's solution mu gives a set of nodes move the pairs'
  * normal relative rates or positions by S mu, and conserve linear momentum (each pair's
  * coefficients sum to zero). Shared by the treatments that act on several pairs at once, which may
@@ -35,8 +37,20 @@ public:
                  const Vector<double>& lumped_mass,
                  const std::vector<bool>& is_fixed);
 
-  /** The number of pairs (rows of S). */
-  unsigned int size() const { return pairs.size(); }
+  /** One row of B: a pair (not owned) and the unit direction of its constraint. */
+  struct Row
+  {
+    const ContactPair<dim>* pair;
+    Tensor<1, dim> direction;
+  };
+
+  /** The rows `rows`, in their order; otherwise as the constructor above. */
+  PairMassSystem(std::vector<Row> rows,
+                 const Vector<double>& lumped_mass,
+                 const std::vector<bool>& is_fixed);
+
+  /** The number of rows of S. */
+  unsigned int size() const { return rows.size(); }
 
   /** mu = S^-1 rhs (`rhs` has size() entries) [rhs over mass]. */
   Eigen::VectorXd solve(const Eigen::VectorXd& rhs) const { return factorization.solve(rhs); }
@@ -48,7 +62,7 @@ public:
   const Node<dim>& node(const unsigned int i) const { return *nodes[i].node; }
 
   /**
-   * (M^-1 B^T mu) at node `i`: the sum over the pairs k it appears in of c_kj mu_k n_k, divided by
+   * (M^-1 B^T mu) at node `i`: the sum over the rows r it appears in of c_rj mu_r d_r, divided by
    * the node's mass, zero in its fixed components [mu over mass].
    */
   Tensor<1, dim> nodal_change(unsigned int i, const Eigen::VectorXd& mu) const;
@@ -69,7 +83,10 @@ private:
     std::vector<Appearance> appearances;
   };
 
-  std::vector<const ContactPair<dim>*> pairs;
+  /** The rows of each pair along its normal. */
+  static std::vector<Row> normal_rows(const std::vector<const ContactPair<dim>*>& pairs);
+
+  std::vector<Row> rows;
   std::vector<NodeAppearances> nodes;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> factorization;
 };

@@ -16,6 +16,12 @@ namespace dyncontact
  * momentum is conserved (each pair's coefficients sum to zero). All other nodes keep the classical
  * rates; a node-to-node pair's tangential rates are kept up to round-off.
  *
+ * With Coulomb friction a stuck pair moves with its master point: the same correction makes its
+ * relative rates continuous along its tangents as well (rows of S along each tangent of
+ * ContactConstraints::stick_directions(), eqs. (21)-(22) with [[u_n - u_{n+1}]] . t in the place
+ * of g_n - g_{n+1}); a sliding pair's normal parts only. At zero friction no pair is stuck and the
+ * scheme is the one above, bit for bit.
+ *
  * Assumes exactly closed active pairs (Lagrange multipliers; with a penalty a pair stays
  * penetrated and the correction glues it, an input error).
  */
@@ -23,6 +29,12 @@ template <int dim>
 class TaylorPapadopoulos : public ContactDynamics<dim>
 {
 public:
+  /**
+   * With friction a stuck pair's whole relative velocity and acceleration are made continuous,
+   * a sliding pair's normal parts only (doc/method.md section 7).
+   */
+  bool carries_friction() const override { return true; }
+
   void correct_rates(const RateMap& rates,
                      const ContactConstraints<dim>& contact,
                      const Vector<double>& lumped_mass,

@@ -86,6 +86,13 @@ public:
   double max_active_normal_jump(const DistributedVector& field) const;
 
   /**
+   * The largest |[[f]] . t| over the stuck pairs' tangents t (ContactConstraints::
+   * stick_directions()) of a nodal field; zero if no pair sticks. The modified Newmark extended to
+   * stick (TaylorPapadopoulos with friction) makes it zero for velocity and acceleration.
+   */
+  double max_stick_jump(const DistributedVector& field) const;
+
+  /**
    * The largest distance of the current position of node A from the axis of the last coordinate
    * (r in axisymmetry, where it is the contact radius) over the active pairs; zero if none is
    * active. Meaningless in 1D, where it is zero.

@@ -27,7 +27,9 @@ struct Measures
   double contact_force      = 0.; ///< recovered from the balance the step solved [force]
   double force_imbalance    = 0.; ///< body A's recovered force minus body B's [force]
   double velocity_jump = 0., acceleration_jump = 0.; ///< largest normal jump across active pairs
-  std::vector<double> momenta;                       ///< per body, along the impact direction
+  /// the largest tangential jump across stuck pairs (friction)
+  double stick_velocity_jump = 0., stick_acceleration_jump = 0.;
+  std::vector<double> momenta;         ///< per body, along the impact direction
   std::vector<double> momentum_tracks; ///< per track of BodyImpulses (a body along a direction)
   double momentum_magnitude = 0.;      ///< sum of |m v| over every DoF
   Tensor<1, max_dimension> momentum;   ///< of all bodies, components x, y (, z) [mass length/time]
@@ -73,6 +75,8 @@ private:
   const ElasticBodies<dim>& bodies;
   const ContactNewtonSolver<dim>& solver;
   const ContactFields<dim> fields;
+  const bool
+      contact_has_friction; ///< the stick jumps are measured (ContactFields::max_stick_jump())
   const ContactDynamics<dim>& dynamics;
   const ImplicitStepper<dim>& stepper;
   const BodyImpulses<dim>& body_impulses;
