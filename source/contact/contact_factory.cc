@@ -87,20 +87,11 @@ std::unique_ptr<ContactGeometry<dim>> surface_geometry(const ContactDescription<
   for (const auto& surfaces : description.surface_pairs)
     try
     {
-      // Not yet: the tangential rows of mortar's weighted gaps, and 3D node-to-surface (on the
-      // oblique spheres Newton stalls at the first stick-to-slip update, the gap left at 1.6e-7:
-      // the normal row leaves out the master point's motion along the curved face, which the
-      // frictionless iteration absorbs and the sliding one does not).
-      const bool friction =
-          surfaces.friction_coefficient.value_or(parameters.friction_coefficient) > 0.;
-      if (friction &&
-          (parameters.discretization == ContactDiscretization::mortar ||
-           (dim == 3 && parameters.discretization != ContactDiscretization::node_to_node)))
-        throw InputError("friction is not implemented yet for Contact/discretization = " +
-                         contact_discretization_names().name(parameters.discretization) +
-                         (dim == 3 ? " in 3D" : "") +
-                         ": set its friction coefficient to 0, or use a rigid plane or "
-                         "node-to-node contact.");
+      // Not yet: the tangential rows of mortar's weighted gaps.
+      if (surfaces.friction_coefficient.value_or(parameters.friction_coefficient) > 0. &&
+          parameters.discretization == ContactDiscretization::mortar)
+        throw InputError("friction is not implemented yet for Contact/discretization = mortar: "
+                         "set its friction coefficient to 0, or use node-to-segment contact.");
       members.push_back(surface_contact(surfaces, dof_handler, kinematics, nodes, parameters));
       add_coefficients(surfaces.friction_coefficient);
     }
