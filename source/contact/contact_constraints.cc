@@ -121,10 +121,14 @@ template <int dim>
 double ContactConstraints<dim>::frictional_dissipation(const Vector<double>& displacement,
                                                        const double new_weight) const
 {
-  return friction.any()
-             ? friction.dissipation(
-                   displacement, active, multiplier_values, block, force_factor, new_weight)
-             : 0.;
+  return friction.any() ? friction.dissipation(displacement,
+                                               active,
+                                               multiplier_values,
+                                               block,
+                                               force_factor,
+                                               new_weight,
+                                               formulation)
+                        : 0.;
 }
 
 template <int dim>

@@ -179,8 +179,9 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
       "r-z or x-y plane; 3D: both tangential directions): rigid planes, node-to-node, "
       "node-to-segment (not mortar); with Contact/dynamics = none, "
       "mass-redistribution or taylor-papadopoulos (whose rate constraints hold a stuck pair's "
-      "whole relative velocity and acceleration). history.csv then has the column "
-      "frictional_dissipation.");
+      "whole relative velocity and acceleration). history.csv then has the columns "
+      "sliding_pairs, frictional_dissipation, stick_velocity_jump and stick_acceleration_jump "
+      "(and, in plane strain, each body's momentum components).");
   prm.declare_entry("penalty factor",
                     "auto",
                     Patterns::Anything(),

@@ -81,9 +81,10 @@ void CoulombFriction<dim>::start_step(const std::vector<ContactPair<dim>>& pairs
 {
   if (!has_friction)
     return;
-  // The old forces in the old bases, before the bases turn with the pairs (f applies at the end).
+  // The old forces in the bases the multipliers are in (the last step's, or a restored state's:
+  // set_bases()), before the bases turn with the pairs (f applies at the end).
   start_forces.assign(pairs.size(), Tensor<1, dim>());
-  for (unsigned int k = 0; k < start_pairs.size(); ++k)
+  for (unsigned int k = 0; k < tangents.size(); ++k)
     if (active[k] && block.n_components(k) > 1)
       for (unsigned int alpha = 0; alpha + 1 < dim; ++alpha)
         start_forces[k] += tangents[k][alpha] * multipliers[block.index(k, alpha + 1)];
@@ -115,7 +116,37 @@ void CoulombFriction<dim>::start_step(const std::vector<ContactPair<dim>>& pairs
           free_part += tangents[k][alpha][d] * tangents[k][alpha][d];
       free_direction[k][alpha] = free_part > 0.5;
     }
+    // lambda_t^n in the new basis (the penalty spring's force carried into the step): the old
+    // force projected, not its components reused (a basis that turns with the normal's smallest
+    // component can jump by 110 degrees for a normal turning 0.008 degrees).
+    for (unsigned int alpha = 0; alpha + 1 < dim; ++alpha)
+      start_multipliers[block.index(k, alpha + 1)] =
+          free_direction[k][alpha] ? tangents[k][alpha] * start_forces[k] : 0.;
   }
+}
+
+template <int dim>
+std::vector<double> CoulombFriction<dim>::bases() const
+{
+  std::vector<double> flat;
+  for (const auto& basis : tangents)
+    for (const Tensor<1, dim>& tangent : basis)
+      for (unsigned int d = 0; d < dim; ++d)
+        flat.push_back(tangent[d]);
+  return flat;
+}
+
+template <int dim>
+void CoulombFriction<dim>::set_bases(const std::vector<double>& flat)
+{
+  AssertThrow(flat.size() % ((dim - 1) * dim + (dim == 1)) == 0,
+              ExcMessage("CoulombFriction::set_bases: not a whole number of bases"));
+  tangents.assign(dim > 1 ? flat.size() / ((dim - 1) * dim) : 0, {});
+  auto value = flat.begin();
+  for (auto& basis : tangents)
+    for (Tensor<1, dim>& tangent : basis)
+      for (unsigned int d = 0; d < dim; ++d)
+        tangent[d] = *value++;
 }
 
 template <int dim>
@@ -338,7 +369,8 @@ double CoulombFriction<dim>::dissipation(const Vector<double>& u,
                                          const Vector<double>& multipliers,
                                          const MultiplierBlock& block,
                                          const double force_factor,
-                                         const double new_weight) const
+                                         const double new_weight,
+                                         const ContactFormulation formulation) const
 {
   double dissipated = 0.;
   for (unsigned int k = 0; k < coefficients.size(); ++k)
@@ -357,6 +389,16 @@ double CoulombFriction<dim>::dissipation(const Vector<double>& u,
             dissipated -=
                 force[d] * coefficient * (u[node.dofs[d]] - start_displacement[node.dofs[d]]);
         });
+    // A penalty's stick is an elastic spring: the energy it stores, f |lambda_t|^2 / (2 c) with
+    // c = eps / f, is not dissipated.
+    if (formulation == ContactFormulation::penalty)
+    {
+      double squared = 0.;
+      if (active[k])
+        for (unsigned int alpha = 0; alpha + 1 < dim; ++alpha)
+          squared += std::pow(multipliers[block.index(k, alpha + 1)], 2);
+      dissipated -= force_factor * (squared - start_forces[k].norm_square()) / (2. * stiffness[k]);
+    }
   }
   return dissipated;
 }

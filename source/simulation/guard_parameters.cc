@@ -9,9 +9,11 @@ void GuardParameters::declare_parameters(ParameterHandler& prm)
   prm.declare_entry("energy",
                     "true",
                     Patterns::Bool(),
-                    "Reject a step whose algorithmic energy exceeds the initial energy plus the "
-                    "work of the external forces (frictionless elastic contact cannot gain "
-                    "energy). A rejected step is cut (Time integration/maximum step cuts).");
+                    "Reject a step whose algorithmic energy, plus the energy friction dissipated "
+                    "(history.csv's frictional_dissipation), exceeds the initial energy plus the "
+                    "work of the external forces (elastic contact cannot gain energy), or whose "
+                    "friction did positive work beyond the energy tolerance. A rejected step is "
+                    "cut (Time integration/maximum step cuts).");
   prm.declare_entry("energy tolerance",
                     "1e-4",
                     Patterns::Double(),

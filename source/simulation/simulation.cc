@@ -148,6 +148,8 @@ void Simulation<dim>::serialize_state(Archive& archive, StepState::Whole& step)
   archive& step;
   archive& contact_state.active;
   archive& contact_state.multipliers;
+  archive& contact_state.slip_states;    // friction's branches (CoulombFriction::states())
+  archive& contact_state.friction_bases; // the bases the tangential multipliers are in
   archive & problem->impulses->ledger();
   archive&* acceptance;
   archive&* controller;

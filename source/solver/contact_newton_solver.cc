@@ -30,6 +30,7 @@ struct ContactNewtonSolver<dim>::Iteration
     typename ContactConstraints<dim>::State contact;
     double merit; ///< the line search's measure of the residual, see DynamicResidual::Figures
     double force_residual; ///< |r| before the update, to tell convergence from round-off
+    bool after_change;     ///< the active set (friction branches included) changed at that state
   };
 
   const typename DynamicResidual<dim>::Step step;
@@ -270,14 +271,16 @@ bool ContactNewtonSolver<dim>::must_backtrack(const Iteration& iteration,
                                               const Evaluation& evaluation) const
 {
   // An update is halved (up to max_backtracks times) when the residual at its end could not be
-  // evaluated (an inverted element) or grew with the active set unchanged. Not for growth with
-  // friction: the semismooth Newton's residual is not monotone after a stick-slip switch (on the
-  // oblique spheres the first full update in the new branch raised it, and halving it 10 times
-  // per update stalled Newton with the gap at 1.6e-7; taken whole, the next update converged).
-  const auto& before     = iteration.before_update;
-  const bool step_failed = !evaluation.failure.empty() ||
+  // evaluated (an inverted element) or grew with the active set unchanged. With friction, not for
+  // growth over the first update in a new branch: the semismooth Newton's residual is not monotone
+  // after a stick-slip switch (on the oblique spheres the first full update in the new branch
+  // raised it, and halving it 10 times stalled Newton with the gap at 1.6e-7; taken whole, the
+  // next update converged).
+  const auto& before             = iteration.before_update;
+  const bool first_in_new_branch = before && before->after_change && contact.has_friction();
+  const bool step_failed         = !evaluation.failure.empty() ||
                            !std::isfinite(evaluation.figures.force_residual) ||
-                           (before && !iteration.active_set_changed && !contact.has_friction() &&
+                           (before && !iteration.active_set_changed && !first_in_new_branch &&
                             evaluation.figures.merit > before->merit);
   return step_failed && before && iteration.step_length > std::pow(0.5, max_backtracks);
 }
@@ -327,9 +330,12 @@ void ContactNewtonSolver<dim>::take_newton_update(
         system.solve(right_hand_side), iteration.newton_update, iteration.multiplier_update);
   }
   ++iteration.linear_solves;
-  iteration.before_update = typename Iteration::StateBeforeUpdate{
-      iteration.increment, contact.state(), figures.merit, figures.force_residual};
-  iteration.step_length = 1.;
+  iteration.before_update = typename Iteration::StateBeforeUpdate{iteration.increment,
+                                                                  contact.state(),
+                                                                  figures.merit,
+                                                                  figures.force_residual,
+                                                                  iteration.active_set_changed};
+  iteration.step_length   = 1.;
   move_along_update(iteration, figures.reference_force);
 }
 

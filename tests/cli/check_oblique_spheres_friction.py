@@ -3,6 +3,7 @@ friction between two bodies in 3D, node-to-surface pairs, on the default mass-re
 
 Usage: check_oblique_spheres_friction.py DIRECTORY
 
+- the impact is over at the end (no active pair);
 - the contact slides (some step has a sliding pair) and dissipates: frictional_dissipation ends
   above 1e-3 of the initial energy (measured 3.6e-2) and never decreases by more than 1e-12 of
   it (round-off of a stuck pair's zero slip: measured 1.0e-15);
@@ -28,6 +29,7 @@ def check(name, value, bound, above=False):
 
 
 first, last = rows[0], rows[-1]
+check("active pairs at the end (the impact is over)", last["active_constraints"], 0)
 energy = first["algorithmic_energy"]
 check("most sliding pairs in a step", max(r["sliding_pairs"] for r in rows), 1, above=True)
 check("frictional dissipation at the end / E_0", last["frictional_dissipation"] / energy, 1e-3, above=True)

@@ -269,7 +269,8 @@ TEST(ContactFields, EventWorkIsHalfTheForceTimesTheGapTheEventCrosses)
   old_u[1] = -0.02;
   Vector<double> old_multipliers(3);
   old_multipliers[1] = 4., old_multipliers[2] = 5.;
-  const typename ContactConstraints<2>::State old{{false, true, true}, old_multipliers, {0, 0, 0}};
+  const typename ContactConstraints<2>::State old{
+      {false, true, true}, old_multipliers, {0, 0, 0}, {}};
   // Its end: pair 0 closed with force 3, pair 1 open at the gap 0.01, pair 2 still closed.
   new_u[3] = -0.01;
   Vector<double> penetrating(6);

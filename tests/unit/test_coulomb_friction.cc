@@ -110,7 +110,9 @@ double tangent_error(const ContactFormulation formulation, const bool slipping)
   Vector<double> old_lambda(dim);
   for (unsigned int c = 0; c < dim; ++c)
     old_lambda[c] = 0.5 + 0.3 * c;
-  friction.start_step(p.pairs, p.start, {true}, old_lambda, p.block, {2.5});
+  // Twice: the first sets the basis old_lambda is in, the second carries it into the step.
+  for (unsigned int call = 0; call < 2; ++call)
+    friction.start_step(p.pairs, p.start, {true}, old_lambda, p.block, {2.5});
   // An iterate well inside the branch: sliding, |z| - b >= 0.5; stuck, |z| - b <= -0.5.
   Vector<double> u = p.start, lambda(dim);
   lambda[0]        = slipping ? 1. : 5.;
@@ -186,8 +188,14 @@ TEST(CoulombFriction, SlidingPairDissipatesMuLambdaTimesSlipAndReversesToStick)
   Vector<double> lambda(3);
   lambda[0] = 2.;
   lambda[1] = -0.4 * 2. * s[0] / s_norm, lambda[2] = -0.4 * 2. * s[1] / s_norm;
-  EXPECT_NEAR(friction.dissipation(u, {true}, lambda, p.block, 1., 1.), 0.8 * s_norm, 1e-14);
-  EXPECT_NEAR(friction.dissipation(u, {true}, lambda, p.block, 1., 0.5), 0.4 * s_norm, 1e-14);
+  EXPECT_NEAR(friction.dissipation(
+                  u, {true}, lambda, p.block, 1., 1., ContactFormulation::lagrange_multiplier),
+              0.8 * s_norm,
+              1e-14);
+  EXPECT_NEAR(friction.dissipation(
+                  u, {true}, lambda, p.block, 1., 0.5, ContactFormulation::lagrange_multiplier),
+              0.4 * s_norm,
+              1e-14);
   friction.set_states({1});
   EXPECT_FALSE(friction.update_states(
       u, {true}, lambda, p.block, ContactFormulation::lagrange_multiplier, 0.));
@@ -195,5 +203,79 @@ TEST(CoulombFriction, SlidingPairDissipatesMuLambdaTimesSlipAndReversesToStick)
   EXPECT_TRUE(friction.update_states(
       u, {true}, lambda, p.block, ContactFormulation::lagrange_multiplier, 0.));
   EXPECT_EQ(friction.states()[0], 0);
+}
+} // namespace dyncontact::testing
+
+namespace dyncontact::testing
+{
+// The old tangential force a step starts from is the multipliers read in the basis they were
+// solved in, also after a restore (bases()/set_bases()), and the penalty spring's force is carried
+// into a new basis by projection: here the normal turns 0.008 degrees and its smallest component
+// moves to another axis, which turns the 3D basis by about 110 degrees. With the new weight 0 the
+// dissipation is -F^n . [[u - u^n]], so it shows which force was taken.
+TEST(CoulombFriction, OldForceIsReadInItsOwnBasisAcrossBasisJumpsAndRestores)
+{
+  FrictionPair<3> p;
+  p.pairs[0].normal = Tensor<1, 3>({0.5, 0.5001, 0.707});
+  p.pairs[0].normal /= p.pairs[0].normal.norm();
+  CoulombFriction<3> friction({0.4});
+  Vector<double> lambda(3);
+  lambda[0] = 2., lambda[1] = 0.3, lambda[2] = -0.2;
+  friction.start_step(p.pairs, p.start, {true}, lambda, p.block, {2.5}); // basis T1
+  const std::vector<double> saved    = friction.bases();
+  const std::vector<Tensor<1, 3>> t1 = friction.friction_directions(0);
+  const Tensor<1, 3> force           = 0.3 * t1[0] - 0.2 * t1[1];
+  Vector<double> u                   = p.start;
+  u[3] += 0.01, u[4] -= 0.02, u[5] += 0.005; // the master node moves
+  Tensor<1, 3> relative;
+  for (unsigned int d = 0; d < 3; ++d)
+    relative[d] = u[3 + d] - p.start[3 + d];
+  const auto old_force_work = [&]()
+  {
+    return friction.dissipation(
+        u, {true}, lambda, p.block, 1., 0., ContactFormulation::lagrange_multiplier);
+  };
+
+  FrictionPair<3> turned = p;
+  turned.pairs[0].normal = Tensor<1, 3>({0.5001, 0.5, 0.707});
+  turned.pairs[0].normal /= turned.pairs[0].normal.norm();
+  friction.start_step(turned.pairs, p.start, {true}, lambda, p.block, {2.5}); // T1 -> T2
+  EXPECT_NEAR(old_force_work(), -(force * relative), 1e-15);
+  const std::vector<Tensor<1, 3>> t2 = friction.friction_directions(0);
+  EXPECT_LT(t1[0] * t2[0], 0.) << "the basis did not jump: the test shows nothing";
+  // A step retried from the saved state: the multipliers are T1's again, not T2's.
+  friction.set_bases(saved);
+  friction.start_step(turned.pairs, p.start, {true}, lambda, p.block, {2.5});
+  EXPECT_NEAR(old_force_work(), -(force * relative), 1e-15);
+  // Without the restore the retry would read them in T2.
+  friction.start_step(turned.pairs, p.start, {true}, lambda, p.block, {2.5});
+  EXPECT_GT(std::abs(old_force_work() + force * relative), 1e-3);
+}
+
+// A penalty pair that sticks is an elastic spring: loaded and unloaded along the same path, the
+// frictional dissipation of the two steps sums to zero (to round-off); each step's is not negative
+// beyond it (the energy it stores is not dissipated).
+TEST(CoulombFriction, PenaltyStickSpringDissipatesNothing)
+{
+  FrictionPair<2> p;
+  CoulombFriction<2> friction({0.4});
+  friction.set_states({0});
+  const double c = 2.5; // eps / f
+  Vector<double> lambda(2), u = p.start;
+  lambda[0] = 10.;
+  friction.start_step(p.pairs, p.start, {true}, lambda, p.block, {c});
+  u[2] += 0.01; // the master node moves along x: a slip increment s
+  const double s = friction.slip(0, 0, u);
+  lambda[1]      = -c * s; // the stick spring's force
+  const double loading =
+      friction.dissipation(u, {true}, lambda, p.block, 1., 0.5, ContactFormulation::penalty);
+  friction.start_step(p.pairs, u, {true}, lambda, p.block, {c});
+  Vector<double> back = p.start, unloaded = lambda;
+  unloaded[1] = 0.;
+  const double unloading =
+      friction.dissipation(back, {true}, unloaded, p.block, 1., 0.5, ContactFormulation::penalty);
+  EXPECT_NEAR(loading, 0., 1e-15);
+  EXPECT_NEAR(unloading, 0., 1e-15);
+  EXPECT_NEAR(loading + unloading, 0., 1e-15);
 }
 } // namespace dyncontact::testing

@@ -186,13 +186,15 @@ public:
     std::vector<bool> active;
     Vector<double> multipliers;
     std::vector<signed char> slip_states; ///< CoulombFriction::states()
+    std::vector<double> friction_bases;   ///< CoulombFriction::bases(), those of the multipliers
   };
-  State state() const { return {active, multiplier_values, friction.states()}; }
+  State state() const { return {active, multiplier_values, friction.states(), friction.bases()}; }
   void restore(const State& saved)
   {
     active            = saved.active;
     multiplier_values = saved.multipliers;
     friction.set_states(saved.slip_states);
+    friction.set_bases(saved.friction_bases);
   }
 
   /** Gap of candidate `pair` at the border displacement u (negative = penetration) [length]. */

@@ -112,7 +112,8 @@ public:
   /**
    * Decides stick or slip for every active friction pair at the border displacement `u` (the
    * class documentation; a pair changes branch only when |z| - mu lambda_n passes
-   * `force_tolerance` [force] the other way); inactive pairs stick. Returns whether any pair
+   * `force_tolerance` [force] the other way); inactive pairs are set sliding, the branch they
+   * enter on (their force mu lambda_n starts at zero). Returns whether any pair
    * changed branch (in 2D also its slip direction).
    */
   bool update_states(const Vector<double>& u,
@@ -121,6 +122,15 @@ public:
                      const MultiplierBlock& block,
                      ContactFormulation formulation,
                      double force_tolerance);
+
+  /**
+   * The tangent bases the tangential multipliers are in, flattened (per pair dim - 1 vectors of dim
+   * components; empty before the first step): what a saved state must keep with the multipliers,
+   * so that start_step() reads them in their own bases after a restore (set_bases()).
+   */
+  std::vector<double> bases() const;
+  /** Restores bases() (throws for a wrong length). */
+  void set_bases(const std::vector<double>& flat);
 
   /**
    * The tangents of `pair` along which it carries friction (its basis of the step's start, less
@@ -141,17 +151,20 @@ public:
    * the border displacement `u`, F_k = (1 - w) F_k^n + w f T lambda_t (f the force per
    * multiplier, F_k^n the pair's force at the step's start, zero for an inactive pair), w =
    * `new_weight` (Newmark: gamma, the weight of its external work; a generalized-alpha member: 1,
-   * its one contact force per step). Negative when the friction did positive work.
+   * its one contact force per step). Negative when the friction did positive work. With the
+   * penalty `formulation`, less the change of the energy its stick springs store,
+   * sum_k f |lambda_t|^2 / (2 c_k).
    */
   double dissipation(const Vector<double>& u,
                      const std::vector<bool>& active,
                      const Vector<double>& multipliers,
                      const MultiplierBlock& block,
                      double force_factor,
-                     double new_weight) const;
+                     double new_weight,
+                     ContactFormulation formulation) const;
 
 private:
-  /** The trial vector z of `pair` and its (clipped) slip bound mu max(lambda_n, 0). */
+  /** The trial vector z of `pair` (its components along the non-free directions zero). */
   std::array<double, dim - 1> trial(unsigned int pair,
                                     const Vector<double>& u,
                                     const Vector<double>& multipliers,

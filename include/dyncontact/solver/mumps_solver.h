@@ -106,8 +106,11 @@ private:
 
   const MPI_Comm communicator;
   std::unique_ptr<Instance> instance;
-  /** This rank's entries on and above the diagonal, 1-based global indices, in row order. */
-  const bool symmetric;
+  const bool symmetric; ///< SYM = 2 (LDL^T) or 0 (LU), see the constructor
+  /**
+   * This rank's entries (symmetric: those on and above the diagonal), 1-based global indices, in
+   * row order.
+   */
   std::vector<int> rows, columns;
   std::vector<double> values;
   /** This rank's rows of the matrix, 1-based: its rows of the right-hand sides. */
