@@ -100,7 +100,11 @@ public:
    * Whether candidate `pair` slides: active, with friction, on the slip branch of Coulomb's law
    * (CoulombFriction).
    */
-  bool is_sliding(unsigned int pair) const { return active[pair] && friction.states()[pair] != 0; }
+  bool is_sliding(unsigned int pair) const
+  {
+    return active[pair] && friction.states()[pair] != 0 &&
+           !friction.friction_directions(pair).empty();
+  }
 
   /**
    * The unit tangents along which candidate `pair` is stuck: active, with friction, on the stick
