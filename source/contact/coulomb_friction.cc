@@ -166,13 +166,10 @@ double CoulombFriction<dim>::slip(const unsigned int pair,
                                   const Vector<double>& u) const
 {
   double s = 0.;
-  start_pairs[pair].for_each_node(
-      [&](const Node<dim>& node, const double coefficient)
-      {
-        for (unsigned int d = 0; d < dim; ++d)
-          s += coefficient * tangents[pair][alpha][d] *
-               (u[node.dofs[d]] - start_displacement[node.dofs[d]]);
-      });
+  for_each_slip_coefficient(pair,
+                            alpha,
+                            [&](const unsigned int dof, const double g)
+                            { s += g * (u[dof] - start_displacement[dof]); });
   return s;
 }
 
@@ -184,14 +181,11 @@ void CoulombFriction<dim>::add_forces(const std::vector<bool>& active,
 {
   for (unsigned int k = 0; k < start_pairs.size(); ++k)
     if (active[k] && block.n_components(k) > 1)
-      start_pairs[k].for_each_node(
-          [&](const Node<dim>& node, const double coefficient)
-          {
-            for (unsigned int alpha = 0; alpha + 1 < dim; ++alpha)
-              for (unsigned int d = 0; d < dim; ++d)
-                force[node.dofs[d]] +=
-                    coefficient * tangents[k][alpha][d] * multipliers[block.index(k, alpha + 1)];
-          });
+      for (unsigned int alpha = 0; alpha + 1 < dim; ++alpha)
+        for_each_slip_coefficient(k,
+                                  alpha,
+                                  [&](const unsigned int dof, const double g)
+                                  { force[dof] += g * multipliers[block.index(k, alpha + 1)]; });
 }
 
 template <int dim>
@@ -260,13 +254,10 @@ void CoulombFriction<dim>::assemble_rows(const Vector<double>& u,
       {
         residual[m] = -slip(k, alpha, u);
         if (rows != nullptr)
-          start_pairs[k].for_each_node(
-              [&](const Node<dim>& node, const double coefficient)
-              {
-                for (unsigned int d = 0; d < dim; ++d)
-                  rows->add_coupling(
-                      m, border.volume_dof(node.dofs[d]), -coefficient * tangents[k][alpha][d]);
-              });
+          for_each_slip_coefficient(k,
+                                    alpha,
+                                    [&](const unsigned int dof, const double g)
+                                    { rows->add_coupling(m, border.volume_dof(dof), -g); });
         if (formulation == ContactFormulation::penalty)
         {
           residual[m] -= (multipliers[m] - start_multipliers[m]) / c;
@@ -297,25 +288,19 @@ void CoulombFriction<dim>::assemble_rows(const Vector<double>& u,
         if (free_direction[k][beta])
           rows->add_multiplier_coupling(m, block.index(k, beta + 1), entry);
         if (bounded)
-          start_pairs[k].for_each_node(
-              [&](const Node<dim>& node, const double coefficient)
-              {
-                for (unsigned int d = 0; d < dim; ++d)
-                  rows->add_row_coupling(m,
-                                         border.volume_dof(node.dofs[d]),
-                                         theta * projection * coefficient * tangents[k][beta][d]);
-              });
+          for_each_slip_coefficient(
+              k,
+              beta,
+              [&](const unsigned int dof, const double g)
+              { rows->add_row_coupling(m, border.volume_dof(dof), theta * projection * g); });
       }
       if (bounded)
         rows->add_multiplier_coupling(m, block.index(k), -coefficients[k] * tau / c);
       // The force's column, -G_t^T, in the displacement rows.
-      start_pairs[k].for_each_node(
-          [&](const Node<dim>& node, const double coefficient)
-          {
-            for (unsigned int d = 0; d < dim; ++d)
-              rows->add_column_coupling(
-                  m, border.volume_dof(node.dofs[d]), -coefficient * tangents[k][alpha][d]);
-          });
+      for_each_slip_coefficient(k,
+                                alpha,
+                                [&](const unsigned int dof, const double g)
+                                { rows->add_column_coupling(m, border.volume_dof(dof), -g); });
     }
   }
 }

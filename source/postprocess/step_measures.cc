@@ -62,14 +62,6 @@ void StepMeasures<dim>::measure_momentum(const StepState& state, Measures& measu
   if (dim == 3 && sums.back() > 0.)
     measures.angular_momentum =
         moment - cross_product_3d(first_moment / sums.back(), measures.momentum);
-  // Each body's components: BodyImpulses' tracks, whose directions in 3D are x, y and z.
-  const unsigned int n_bodies = measures.momenta.size();
-  AssertThrow(measures.momentum_tracks.size() == n_bodies * dim,
-              ExcMessage("StepMeasures: the momentum directions of a 3D model are x, y and z"));
-  measures.body_momenta.resize(n_bodies);
-  for (unsigned int b = 0; b < n_bodies; ++b)
-    for (unsigned int d = 0; d < dim; ++d)
-      measures.body_momenta[b][d] = measures.momentum_tracks[b * dim + d];
 }
 
 template <int dim>
@@ -123,14 +115,18 @@ Measures StepMeasures<dim>::measure(const bool after_a_step) const
   measures.momenta         = body_impulses.along_impact(measures.momentum_tracks);
   if (dim == 3) // history.csv has these columns in 3D only
     measure_momentum(state, measures);
-  else if (measures.momentum_tracks.size() == measures.momenta.size() * dim)
-    // Plane strain: the tracks are x and y of each body (StepRecorder::has_body_momenta()).
-    for (unsigned int b = 0; b < measures.momenta.size(); ++b)
-    {
-      measures.body_momenta.emplace_back();
+  // Each body's components where BodyImpulses' tracks are x, y (and z) of each body: 3D and plane
+  // strain (StepRecorder::has_body_momenta()), not an axisymmetric model's axis alone.
+  const unsigned int n_bodies = measures.momenta.size();
+  AssertThrow(dim != 3 || measures.momentum_tracks.size() == n_bodies * dim,
+              ExcMessage("StepMeasures: the momentum directions of a 3D model are x, y and z"));
+  if (measures.momentum_tracks.size() == n_bodies * dim)
+  {
+    measures.body_momenta.resize(n_bodies);
+    for (unsigned int b = 0; b < n_bodies; ++b)
       for (unsigned int d = 0; d < dim; ++d)
         measures.body_momenta[b][d] = measures.momentum_tracks[b * dim + d];
-    }
+  }
   return measures;
 }
 

@@ -14,18 +14,13 @@ Usage: check_oblique_spheres_friction.py DIRECTORY
 - at most 20 linear solves in a step (measured 15, at the first contact step; issue 29 F asks 15
   of its cases B and C, which the Newton limit of 25 would let pass unnoticed).
 """
-import csv
 import sys
 
-rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(f"{sys.argv[1]}/history.csv"))]
-failures = []
+from history_checks import Checks, read_history
 
-
-def check(name, value, bound, above=False):
-    ok = value >= bound if above else value <= bound
-    print(f"{name}: {value:.3g} ({'at least' if above else 'bound'} {bound:g}) {'ok' if ok else 'FAILED'}")
-    if not ok:
-        failures.append(name)
+rows = read_history(sys.argv[1])
+checks = Checks()
+check = checks.bound
 
 
 first, last = rows[0], rows[-1]
@@ -40,6 +35,4 @@ scale = abs(first["momentum_z"])
 for axis in "xz":
     check(f"largest change of the momentum along {axis} / |p_z|", max(abs(r[f"momentum_{axis}"] - first[f"momentum_{axis}"]) for r in rows) / scale, 1e-10)
 check("largest linear solves in a step", max(r["newton_iterations"] for r in rows), 20)
-if failures:
-    print("FAILED:", ", ".join(failures))
-    sys.exit(1)
+checks.finish()

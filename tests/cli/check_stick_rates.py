@@ -13,20 +13,15 @@ minus sliding_pairs), so that the tangential bound was tested.
 none: the classical rates, whose tangential jump at a stuck pair is of the order of the
 tangential speed (0.1 of SPEED measured): above 1e-2 of SPEED, so that the check above can fail.
 """
-import csv
 import sys
+
+from history_checks import Checks, read_history
 
 directory, mode = sys.argv[1], sys.argv[2]
 speed, dt = float(sys.argv[3]), float(sys.argv[4])
-rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(open(f"{directory}/history.csv"))]
-failures = []
-
-
-def check(name, value, bound, above=False):
-    ok = value >= bound if above else value <= bound
-    print(f"{name}: {value:.3g} ({'at least' if above else 'bound'} {bound:g}) {'ok' if ok else 'FAILED'}")
-    if not ok:
-        failures.append(name)
+rows = read_history(directory)
+checks = Checks()
+check = checks.bound
 
 
 stuck = max(r["active_constraints"] - r["sliding_pairs"] for r in rows)
@@ -45,6 +40,4 @@ else:
         start = first[f"momentum_1_{axis}"] + first[f"momentum_2_{axis}"]
         drift = max(abs(r[f"momentum_1_{axis}"] + r[f"momentum_2_{axis}"] - start) for r in rows)
         check(f"largest change of the momentum along {axis} / |p|", drift / scale, 1e-10)
-if failures:
-    print("FAILED:", ", ".join(failures))
-    sys.exit(1)
+checks.finish()

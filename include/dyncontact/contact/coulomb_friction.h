@@ -164,6 +164,22 @@ public:
                      ContactFormulation formulation) const;
 
 private:
+  /**
+   * Calls f(dof, g) for every border DoF of `pair`'s nodes at the step's start, with g = c_j
+   * t_alpha[d] its coefficient in the slip increment s_alpha: the row ds_alpha / du that the
+   * slip, the tangential forces and the tangential rows are made of.
+   */
+  template <typename Function>
+  void for_each_slip_coefficient(unsigned int pair, unsigned int alpha, const Function& f) const
+  {
+    start_pairs[pair].for_each_node(
+        [&](const Node<dim>& node, const double coefficient)
+        {
+          for (unsigned int d = 0; d < dim; ++d)
+            f(node.dofs[d], coefficient * tangents[pair][alpha][d]);
+        });
+  }
+
   /** The trial vector z of `pair` (its components along the non-free directions zero). */
   std::array<double, dim - 1> trial(unsigned int pair,
                                     const Vector<double>& u,

@@ -85,8 +85,7 @@ private:
   const std::vector<Node<dim>>& nodes;
 
   /**
-   * Measures::momentum and, in 3D, angular_momentum of `state`, and body_momenta from
-   * Measures::momentum_tracks (x, y, z per body; measured before). Collective.
+   * Measures::momentum and, in 3D, angular_momentum of `state`. Collective.
    */
   void measure_momentum(const StepState& state, Measures& measures) const;
 };
