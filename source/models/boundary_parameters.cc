@@ -65,9 +65,38 @@ void SupportParameters::parse_parameters(ParameterHandler& prm,
   components.erase(std::unique(components.begin(), components.end()), components.end());
 }
 
+void DirichletParameters::declare_parameters(ParameterHandler& prm, const unsigned int dim)
+{
+  SupportParameters::declare_parameters(prm);
+  // Documented in the README: u_i = g_i(x, t) [length] of the chosen components.
+  declare_function_subsection(prm, "Displacement", dim);
+}
+
+void DirichletParameters::parse_parameters(ParameterHandler& prm,
+                                           const std::string& section,
+                                           const unsigned int dim)
+{
+  where.parse_parameters(prm, section, dim);
+  displacement = parse_function_subsection(prm, "Displacement", section, dim);
+}
+
+std::vector<HeldBoundary> BoundaryParameters::held_boundaries() const
+{
+  std::vector<HeldBoundary> held;
+  for (unsigned int k = 0; k < supports.size(); ++k)
+    held.push_back({"Boundary/Support " + std::to_string(k + 1), supports[k], {}});
+  for (unsigned int k = 0; k < dirichlet_boundaries.size(); ++k)
+    held.push_back({"Boundary/Dirichlet " + std::to_string(k + 1),
+                    dirichlet_boundaries[k].where,
+                    dirichlet_boundaries[k].displacement});
+  return held;
+}
+
 void BoundaryParameters::declare_parameters(ParameterHandler& prm,
                                             const unsigned int n_symmetry_planes,
-                                            const unsigned int n_supports)
+                                            const unsigned int n_supports,
+                                            const unsigned int n_dirichlet_boundaries,
+                                            const unsigned int dim)
 {
   prm.enter_subsection("Boundary");
   prm.declare_entry("number of symmetry planes",
@@ -78,6 +107,11 @@ void BoundaryParameters::declare_parameters(ParameterHandler& prm,
                     "0",
                     Patterns::Integer(0, 100),
                     "How many `Support k` subsections follow, 0..100.");
+  prm.declare_entry("number of Dirichlet boundaries",
+                    "0",
+                    Patterns::Integer(0, 100),
+                    "How many `Dirichlet k` subsections follow, 0..100: boundaries whose chosen "
+                    "displacement components follow a given function of x and t.");
   for_each_numbered_subsection(prm,
                                "Symmetry",
                                n_symmetry_planes,
@@ -88,6 +122,11 @@ void BoundaryParameters::declare_parameters(ParameterHandler& prm,
                                n_supports,
                                [&prm](unsigned int, const std::string&)
                                { SupportParameters::declare_parameters(prm); });
+  for_each_numbered_subsection(prm,
+                               "Dirichlet",
+                               n_dirichlet_boundaries,
+                               [&prm, dim](unsigned int, const std::string&)
+                               { DirichletParameters::declare_parameters(prm, dim); });
   prm.leave_subsection();
 }
 
@@ -96,6 +135,7 @@ void BoundaryParameters::parse_parameters(ParameterHandler& prm, const unsigned 
   prm.enter_subsection("Boundary");
   symmetry_planes.resize(prm.get_integer("number of symmetry planes"));
   supports.resize(prm.get_integer("number of supports"));
+  dirichlet_boundaries.resize(prm.get_integer("number of Dirichlet boundaries"));
   for_each_numbered_subsection(
       prm,
       "Symmetry",
@@ -115,6 +155,12 @@ void BoundaryParameters::parse_parameters(ParameterHandler& prm, const unsigned 
                                supports.size(),
                                [&](const unsigned int k, const std::string& name)
                                { supports[k].parse_parameters(prm, "Boundary/" + name, dim); });
+  for_each_numbered_subsection(
+      prm,
+      "Dirichlet",
+      dirichlet_boundaries.size(),
+      [&](const unsigned int k, const std::string& name)
+      { dirichlet_boundaries[k].parse_parameters(prm, "Boundary/" + name, dim); });
   prm.leave_subsection();
 }
 } // namespace dyncontact

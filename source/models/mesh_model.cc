@@ -255,11 +255,10 @@ std::vector<FixedBoundary> MeshModel::fixed_boundaries() const
                        "or y (z).");
     fixed.push_back({id, {*normal_axis}});
   }
-  for (unsigned int k = 0; k < boundary.supports.size(); ++k)
+  for (const HeldBoundary& held : boundary.held_boundaries())
   {
-    const std::string name = "Boundary/Support " + std::to_string(k + 1);
-    find_curve(boundary.supports[k].boundary, name);
-    fixed.push_back({boundary.supports[k].boundary, boundary.supports[k].components});
+    find_curve(held.where.boundary, held.section);
+    fixed.push_back({held.where.boundary, held.where.components, held.displacement, held.section});
   }
   return fixed;
 }

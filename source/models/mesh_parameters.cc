@@ -43,16 +43,12 @@ void evaluate_once(const FunctionExpression& function)
     parsed->value(Point<dim>(), component);
 }
 
-/**
- * Reads the `dim`-component ParsedFunction in subsection `name` and evaluates each component once,
- * at the origin and t = 0: muParser compiles an expression only when it is first evaluated, so an
- * unknown function or a syntax error shows here and not in the middle of a run. Any problem
- * becomes an InputError naming the entry and the expression.
- */
-FunctionExpression parse_function(ParameterHandler& prm,
-                                  const std::string& name,
-                                  const std::string& section,
-                                  const unsigned int dim)
+} // namespace
+
+FunctionExpression parse_function_subsection(ParameterHandler& prm,
+                                             const std::string& name,
+                                             const std::string& section,
+                                             const unsigned int dim)
 {
   prm.enter_subsection(name);
   const FunctionExpression function{
@@ -79,8 +75,9 @@ FunctionExpression parse_function(ParameterHandler& prm,
   return function;
 }
 
-/** Declares a `dim`-component ParsedFunction of x, y (, z) and t in subsection `name`. */
-void declare_function(ParameterHandler& prm, const std::string& name, const unsigned int dim)
+void declare_function_subsection(ParameterHandler& prm,
+                                 const std::string& name,
+                                 const unsigned int dim)
 {
   prm.enter_subsection(name);
   if (dim == 3)
@@ -89,7 +86,6 @@ void declare_function(ParameterHandler& prm, const std::string& name, const unsi
     Functions::ParsedFunction<2>::declare_parameters(prm, 2);
   prm.leave_subsection();
 }
-} // namespace
 
 void MeshParameters::declare_parameters(ParameterHandler& prm)
 {
@@ -182,11 +178,11 @@ void BodyParameters::declare_parameters(ParameterHandler& prm, const unsigned in
       "sphere), or (x_c, y_c) or (x_c, y_c, z_c).");
   // Documented in the README: (v_r; v_z) [length/time], or (v_x; v_y; v_z) in 3D, of x (= r),
   // y (= z), z and t.
-  declare_function(prm, "Initial velocity", dim);
+  declare_function_subsection(prm, "Initial velocity", dim);
   // Documented in the README: force per unit reference area.
-  declare_function(prm, "Surface traction", dim);
+  declare_function_subsection(prm, "Surface traction", dim);
   // Documented in the README: force per unit reference volume.
-  declare_function(prm, "Body force", dim);
+  declare_function_subsection(prm, "Body force", dim);
 }
 
 void BodyParameters::parse_parameters(ParameterHandler& prm,
@@ -216,9 +212,9 @@ void BodyParameters::parse_parameters(ParameterHandler& prm,
     for (const std::string& number : point)
       monitor_point.push_back(Utilities::string_to_double(number));
   }
-  initial_velocity = parse_function(prm, "Initial velocity", section, dim);
-  surface_traction = parse_function(prm, "Surface traction", section, dim);
-  body_force       = parse_function(prm, "Body force", section, dim);
+  initial_velocity = parse_function_subsection(prm, "Initial velocity", section, dim);
+  surface_traction = parse_function_subsection(prm, "Surface traction", section, dim);
+  body_force       = parse_function_subsection(prm, "Body force", section, dim);
 }
 
 void BodiesParameters::declare_parameters(ParameterHandler& prm,

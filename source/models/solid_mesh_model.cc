@@ -236,11 +236,10 @@ std::vector<FixedBoundary> SolidMeshModel::fixed_boundaries() const
     }
     fixed.push_back({surface.id, {*normal_axis}});
   }
-  for (unsigned int k = 0; k < boundary.supports.size(); ++k)
+  for (const HeldBoundary& held : boundary.held_boundaries())
   {
-    const std::string name = "Boundary/Support " + std::to_string(k + 1);
-    find_surface(boundary.supports[k].boundary, name + "/boundary");
-    fixed.push_back({boundary.supports[k].boundary, boundary.supports[k].components});
+    find_surface(held.where.boundary, held.section + "/boundary");
+    fixed.push_back({held.where.boundary, held.where.components, held.displacement, held.section});
   }
   return fixed;
 }

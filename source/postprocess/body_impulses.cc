@@ -194,11 +194,23 @@ void BodyImpulses<dim>::accumulate(const StepState& start,
                            contact_sums[t] += weight * correction;
                          });
         }
+        // At a fixed DoF the load and the reaction together are M a + Q: their work on a prescribed
+        // motion counts (a support's does not move), weighted as the balance takes them.
+        const auto inertia_and_elastic = [&](const StepState& at)
+        { return mass[i] * at.acceleration.local_element(j) + at.internal_force.local_element(j); };
+        const bool at_balance = step_load.size() > 0;
+        double force          = at_balance ? step_load.local_element(j)
+                                           : (1. - gamma) * start.external_force.local_element(j) +
+                                        gamma * state.external_force.local_element(j);
+        if (is_fixed_dof[i] && at_balance)
+          force = (1. - integrator.alpha_m()) * mass[i] * state.acceleration.local_element(j) +
+                  integrator.alpha_m() * mass[i] * start.acceleration.local_element(j) +
+                  (1. - integrator.alpha_f()) * state.internal_force.local_element(j) +
+                  integrator.alpha_f() * start.internal_force.local_element(j);
+        else if (is_fixed_dof[i])
+          force = (1. - gamma) * inertia_and_elastic(start) + gamma * inertia_and_elastic(state);
         work_sum[0] +=
-            (step_load.size() > 0 ? step_load.local_element(j)
-                                  : (1. - gamma) * start.external_force.local_element(j) +
-                                        gamma * state.external_force.local_element(j)) *
-            (state.displacement.local_element(j) - start.displacement.local_element(j));
+            force * (state.displacement.local_element(j) - start.displacement.local_element(j));
       });
   for (std::vector<double>* sums : {&impulse_sums, &contact_sums, &work_sum})
     sum_over_ranks(*sums, communicator);

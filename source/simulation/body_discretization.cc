@@ -58,7 +58,8 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   kinematics = model.create_kinematics();
   is_fixed_dof.assign(dof_handler.n_dofs(), false);
   std::vector<types::global_dof_index> rank_fixed_dofs = model.fixed_dofs(*nodes);
-  for (const FixedBoundary& boundary : model.fixed_boundaries())
+  const std::vector<FixedBoundary> fixed_boundaries    = model.fixed_boundaries();
+  for (const FixedBoundary& boundary : fixed_boundaries)
   {
     ComponentMask mask(dim, false);
     for (const unsigned int component : boundary.components)
@@ -76,6 +77,8 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
     is_fixed_dof[dof] = true;
   }
   constraints.close();
+  prescribed =
+      std::make_unique<PrescribedDisplacements<dim>>(dof_handler, *nodes, fixed_boundaries);
   bodies = std::make_unique<ElasticBodies<dim>>(
       dof_handler, mapping, *kinematics, model.body_materials(), &constraints);
   loads = std::make_unique<ExternalLoads<dim>>(

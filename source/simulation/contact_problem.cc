@@ -60,7 +60,7 @@ ContactProblem<dim>::ContactProblem(ProblemModel<dim>& model,
                                                  timer,
                                                  integrator.alpha_f());
   stepper = std::make_unique<ImplicitStepper<dim>>(
-      integrator, mass, d.is_fixed_dof, *d.loads, *contact, *dynamics, *solver);
+      integrator, mass, d.is_fixed_dof, *d.prescribed, *d.loads, *contact, *dynamics, *solver);
   impulses = std::make_unique<BodyImpulses<dim>>(integrator, mass, d.is_fixed_dof, *contact);
   impulses->index(
       d.nodes->nodes(), model.momentum_directions(), model.impact_direction(), model.n_bodies());

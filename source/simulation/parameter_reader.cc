@@ -197,6 +197,7 @@ struct ProblemSize
   unsigned int n_pairs;
   unsigned int n_symmetry_planes = 0;
   unsigned int n_supports        = 0;
+  unsigned int n_dirichlet       = 0;
 };
 
 /**
@@ -217,8 +218,11 @@ void declare_all(ParameterHandler& prm, const std::optional<ProblemSize>& size)
     MeshParameters::declare_parameters(prm);
     BodiesParameters::declare_parameters(
         prm, size ? size->n_bodies : 1, size ? space_dimension(size->geometry) : 2);
-    BoundaryParameters::declare_parameters(
-        prm, size ? size->n_symmetry_planes : 1, size ? size->n_supports : 1);
+    BoundaryParameters::declare_parameters(prm,
+                                           size ? size->n_symmetry_planes : 1,
+                                           size ? size->n_supports : 1,
+                                           size ? size->n_dirichlet : 1,
+                                           size ? space_dimension(size->geometry) : 2);
   }
   OutputParameters::declare_parameters(prm);
 }
@@ -268,6 +272,7 @@ ProblemSize read_problem_size(const std::string& filename,
   size_prm.enter_subsection("Boundary");
   size_prm.declare_entry("number of symmetry planes", "0", Patterns::Integer(0, 10));
   size_prm.declare_entry("number of supports", "0", Patterns::Integer(0, 100));
+  size_prm.declare_entry("number of Dirichlet boundaries", "0", Patterns::Integer(0, 100));
   size_prm.leave_subsection();
   parse_file(size_prm, filename, true);
   for (const auto& text : overrides)
@@ -287,6 +292,7 @@ ProblemSize read_problem_size(const std::string& filename,
   size_prm.enter_subsection("Boundary");
   size.n_symmetry_planes = size_prm.get_integer("number of symmetry planes");
   size.n_supports        = size_prm.get_integer("number of supports");
+  size.n_dirichlet       = size_prm.get_integer("number of Dirichlet boundaries");
   size_prm.leave_subsection();
   if (size.geometry == GeometryKind::bars && size.n_pairs > 0)
     throw InputError("Contact/number of pairs = " + std::to_string(size.n_pairs) +

@@ -7,12 +7,13 @@ template <int dim>
 ImplicitStepper<dim>::ImplicitStepper(const GeneralizedAlpha& integrator,
                                       const Vector<double>& lumped_mass,
                                       const std::vector<bool>& is_fixed_dof,
+                                      const PrescribedDisplacements<dim>& prescribed,
                                       const ExternalLoads<dim>& loads,
                                       ContactConstraints<dim>& contact,
                                       const ContactDynamics<dim>& dynamics,
                                       ContactNewtonSolver<dim>& solver)
-    : integrator(integrator), mass(lumped_mass), is_fixed_dof(is_fixed_dof), loads(loads),
-      contact(contact), dynamics(dynamics), solver(solver),
+    : integrator(integrator), mass(lumped_mass), is_fixed_dof(is_fixed_dof), prescribed(prescribed),
+      loads(loads), contact(contact), dynamics(dynamics), solver(solver),
       border_mass(contact.border().gather(lumped_mass)),
       border_fixed(contact.border().gather(is_fixed_dof))
 {
@@ -40,6 +41,9 @@ void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
                        if (is_fixed_dof[i])
                          v = a = 0.;
                      });
+  // A thousandth of a step: the rates' central differences are then exact to far below the
+  // integrator's own error at the boundary.
+  prescribed.set_rates(0., 1e-3 * integrator.time_step(), current.velocity, current.acceleration);
 }
 
 template <int dim>
@@ -89,11 +93,22 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
     old_balance_net_force *= integrator.alpha_f();
     old_balance_net_force -= load_at_balance;
   }
+  // Dirichlet boundaries: their DoFs are fixed (Newton never updates them), so they take g(t_{n+1})
+  // in the initial guess u~ + increment and in the configuration Newton restarts from.
+  DistributedVector restart_configuration = before.displacement;
+  prescribed.set_displacement(time, restart_configuration);
+  prescribed.set_displacement(time, increment);
+  for_each_owned_row(increment,
+                     [&](const types::global_dof_index i, const unsigned int j)
+                     {
+                       if (is_fixed_dof[i])
+                         increment.local_element(j) -= predictor.local_element(j);
+                     });
   const auto report =
       solver.solve(predictor,
                    integrator.inertia_factor(),
                    effective_force.size() > 0 ? effective_force : current.external_force,
-                   before.displacement,
+                   restart_configuration,
                    increment);
   current.internal_force.copy_locally_owned_data_from(solver.internal_force());
   return report.linear_solves;

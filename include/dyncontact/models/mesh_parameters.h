@@ -45,6 +45,20 @@ struct FunctionExpression
   bool is_zero() const;
 };
 
+/** Declares a `dim`-component ParsedFunction of x, y (, z) and t in subsection `name`. */
+void declare_function_subsection(ParameterHandler& prm, const std::string& name, unsigned int dim);
+
+/**
+ * Reads the `dim`-component ParsedFunction in subsection `name` and evaluates each component once,
+ * at the origin and t = 0: muParser compiles an expression only when it is first evaluated, so an
+ * unknown function or a syntax error shows here and not in the middle of a run. Any problem
+ * becomes an InputError naming `section`/`name`, the entry and the expression.
+ */
+FunctionExpression parse_function_subsection(ParameterHandler& prm,
+                                             const std::string& name,
+                                             const std::string& section,
+                                             unsigned int dim);
+
 /** One body of a mesh-based problem. Subsection `Bodies/Body <b>`. */
 struct BodyParameters
 {

@@ -6,6 +6,7 @@
 #include <dyncontact/discretization/external_loads.h>
 #include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/node_index.h>
+#include <dyncontact/models/mesh_parameters.h>
 #include <dyncontact/postprocess/history.h>
 
 #include <deal.II/grid/tria.h>
@@ -17,11 +18,18 @@
 
 namespace dyncontact
 {
-/** Displacement components held at zero for all time on the faces of one boundary id. */
+/**
+ * Displacement components held for all time on the faces of one boundary id: at zero, or at
+ * u_i = g_i(x, t) of a prescribed displacement (DirichletParameters).
+ */
 struct FixedBoundary
 {
   types::boundary_id boundary;
   std::vector<unsigned int> components; ///< 0 .. dim - 1
+  /// g(x, t) with dim components [length], of which `components` apply; empty: held at zero
+  FunctionExpression displacement = {};
+  /// the parameter subsection it comes from ("Boundary/Dirichlet 1"), for errors
+  std::string section = {};
 };
 
 /**
@@ -77,8 +85,9 @@ public:
   virtual std::vector<types::global_dof_index> fixed_dofs(const NodeIndex<dim>& nodes) const;
 
   /**
-   * Boundaries with displacement components held at zero for all time (symmetry planes,
-   * supports), besides fixed_dofs(); valid after create_triangulation(). The default: none.
+   * Boundaries with displacement components held for all time (symmetry planes and supports at
+   * zero, Dirichlet boundaries at their prescribed displacement), besides fixed_dofs(); valid after
+   * create_triangulation(). The default: none.
    * Throws InputError for a boundary the mesh cannot hold so.
    */
   virtual std::vector<FixedBoundary> fixed_boundaries() const;

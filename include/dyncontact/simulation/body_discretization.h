@@ -5,6 +5,7 @@
 #include <dyncontact/discretization/external_loads.h>
 #include <dyncontact/discretization/kinematics.h>
 #include <dyncontact/discretization/node_index.h>
+#include <dyncontact/discretization/prescribed_displacements.h>
 #include <dyncontact/models/problem_model.h>
 
 #include <deal.II/distributed/fully_distributed_tria.h>
@@ -36,8 +37,8 @@ using BodyTriangulation = std::conditional_t<dim == 1,
  * The bodies of a ProblemModel discretized: the mesh (BodyTriangulation), the vector-valued FE_Q of
  * the model's degree, the curved-cell mapping (its support points computed once from the
  * manifolds), the DoFs and nodes, the kinematics, the elastic bodies with their lumped masses, the
- * DoFs held at zero (as constraints) and the surface loads. Built once; throws the model's
- * InputError for a bad mesh.
+ * DoFs held at zero or prescribed (as constraints on Newton's updates) and the surface loads. Built
+ * once; throws the model's InputError for a bad mesh.
  */
 template <int dim>
 class BodyDiscretization
@@ -52,12 +53,15 @@ public:
   std::unique_ptr<NodeIndex<dim>> nodes;
   std::unique_ptr<Kinematics<dim>> kinematics;
   /**
-   * The DoFs held at zero for all time (the axis, clamps) as homogeneous constraints u_i = 0,
+   * The DoFs held for all time (the axis, clamps at zero, Dirichlet boundaries at g(X, t)) as
+   * homogeneous constraints on Newton's updates, du_i = 0,
    * every one on every rank (they are few, and the contact rows of one rank may couple to another
    * rank's): the tangent's rows and columns of these DoFs are eliminated (ElasticBodies).
    */
   AffineConstraints<double> constraints;
   std::vector<bool> is_fixed_dof; ///< per DoF of the mesh: constrained
+  /** The fixed DoFs of Dirichlet boundaries, with their displacement g(X, t). */
+  std::unique_ptr<PrescribedDisplacements<dim>> prescribed;
   std::unique_ptr<ElasticBodies<dim>> bodies;
   std::unique_ptr<ExternalLoads<dim>> loads;
   /** ElasticBodies::highest_frequency_bound() of the bodies with their fixed DoFs [1/time]. */

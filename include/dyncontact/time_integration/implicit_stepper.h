@@ -5,6 +5,7 @@
 #include <dyncontact/contact_dynamics/contact_dynamics.h>
 #include <dyncontact/discretization/elastic_bodies.h>
 #include <dyncontact/discretization/external_loads.h>
+#include <dyncontact/discretization/prescribed_displacements.h>
 #include <dyncontact/solver/contact_newton_solver.h>
 #include <dyncontact/time_integration/generalized_alpha.h>
 #include <dyncontact/time_integration/step_state.h>
@@ -39,6 +40,7 @@ public:
   ImplicitStepper(const GeneralizedAlpha& integrator,
                   const Vector<double>& lumped_mass,
                   const std::vector<bool>& is_fixed_dof,
+                  const PrescribedDisplacements<dim>& prescribed,
                   const ExternalLoads<dim>& loads,
                   ContactConstraints<dim>& contact,
                   const ContactDynamics<dim>& dynamics,
@@ -47,8 +49,8 @@ public:
   /**
    * The initial state: u_0 = 0, `initial_velocity` (whole, n_dofs), Q(u_0) of `bodies`, W(0) and
    * the acceleration of equilibrium M a_0 = W(0) - Q(u_0) (no contact at t = 0); v_0 and a_0 zero
-   * at fixed DoFs, a_0 zero at massless DoFs (Contact/dynamics = mass-redistribution), whose rates
-   * carry no momentum.
+   * at fixed DoFs, dg/dt and d2g/dt2 at prescribed ones (Dirichlet boundaries), a_0 zero at
+   * massless DoFs (Contact/dynamics = mass-redistribution), whose rates carry no momentum.
    */
   void start(const Vector<double>& initial_velocity, const ElasticBodies<dim>& bodies);
 
@@ -59,7 +61,8 @@ public:
   /**
    * Solves the step from `before` to `time` at the integrator's step size: sets the state's
    * internal force Q and external force W(`time`) and the increment over the predictor
-   * (`increment`, owned DoFs). Returns the linear solves; throws SolverFailure. Collective.
+   * (`increment`, owned DoFs; at prescribed DoFs g(`time`) minus the predictor). Returns the linear
+   * solves; throws SolverFailure. Collective.
    */
   unsigned int solve(const StepState& before, double time, DistributedVector& increment);
 
@@ -83,6 +86,7 @@ private:
   const GeneralizedAlpha& integrator;
   const Vector<double>& mass;
   const std::vector<bool>& is_fixed_dof;
+  const PrescribedDisplacements<dim>& prescribed;
   const ExternalLoads<dim>& loads;
   ContactConstraints<dim>& contact;
   const ContactDynamics<dim>& dynamics;
