@@ -7,14 +7,12 @@
 // bodies share no node).
 //
 // The meshes are unstructured and do not match (mortar contact), all quadrilaterals, by the
-// method of sphere_graded.geo and tutorial_striker_on_plate.geo: a Distance field from the
-// contact points and a Threshold field per body set the cell edge, h = ContactSize in the
-// cylinder and BlockSizeRatio * ContactSize in the block within ZoneRadius of the contact point,
-// growing linearly to FarSize at distance ZoneRadius + R and FarSize beyond; each field acts on
-// its body only (a Restrict field), and the Min of the two is the background field. gmsh meshes
-// with twice these sizes (Frontal-Delaunay triangles, recombined by the simple full-quad
-// algorithm) and splits every cell into quadrilaterals (Mesh.SubdivisionAlgorithm = 1), which
-// halves the edges and leaves no triangle; the vertices the split adds on the arc are placed on
+// method of sphere_graded.geo and tutorial_striker_on_plate.geo (contact_zone_sizes.geo.inc):
+// h = ContactSize in the cylinder and BlockSizeRatio * ContactSize in the block within ZoneRadius
+// of the contact point, growing linearly to FarSize at distance ZoneRadius + R and FarSize
+// beyond. gmsh meshes with twice these sizes (Frontal-Delaunay triangles, recombined by the simple
+// full-quad algorithm) and splits every cell into quadrilaterals (Mesh.SubdivisionAlgorithm = 1),
+// which halves the edges and leaves no triangle; the vertices the split adds on the arc are placed on
 // the circle (dyncontact fits a circle to them, tolerance 1e-6 R). The default BlockSizeRatio
 // 1.25 makes the block's top face edges longer than the cylinder's at the contact (the slave
 // side, the cylinder's arc, the finer one, as mortar contact is usually set up), so that
@@ -122,46 +120,12 @@ block_axis   = newl; Line(block_axis)   = {origin, foot};
 block_loop = newll; Curve Loop(block_loop) = {block_bottom, block_side, block_top, block_axis};
 block = news; Plane Surface(block) = {block_loop};
 
-// The size fields, with the sizes doubled for the subdivision below: the distance from the
-// contact points (the cylinder's pole and the block's vertex at the origin), one threshold per
-// body restricted to that body (its surface, curves and points: gmsh 4.8 restricts to the
-// entities listed only), and their minimum.
-Field[1] = Distance;
-Field[1].PointsList = {pole, origin};
-Field[2] = Threshold;
-Field[2].InField = 1;
-Field[2].SizeMin = 2 * ContactSize;
-Field[2].SizeMax = 2 * FarSize;
-Field[2].DistMin = ZoneRadius;
-Field[2].DistMax = ZoneRadius + R;
-Field[3] = Restrict;
-Field[3].InField = 2;
-Field[3].SurfacesList = {cylinder};
-Field[3].CurvesList = {lower_arc, upper_arc, cylinder_axis};
-Field[3].PointsList = {pole, equator, summit};
-Field[4] = Threshold;
-Field[4].InField = 1;
-Field[4].SizeMin = 2 * BlockSizeRatio * ContactSize;
-Field[4].SizeMax = 2 * FarSize;
-Field[4].DistMin = ZoneRadius;
-Field[4].DistMax = ZoneRadius + R;
-Field[5] = Restrict;
-Field[5].InField = 4;
-Field[5].SurfacesList = {block};
-Field[5].CurvesList = {block_bottom, block_side, block_top, block_axis};
-Field[5].PointsList = {origin, top_corner, foot_corner, foot};
-Field[6] = Min;
-Field[6].FieldsList = {3, 5};
-Background Field = 6;
-
-Mesh.MeshSizeFromPoints         = 0;
-Mesh.MeshSizeFromCurvature      = 0;
-Mesh.MeshSizeExtendFromBoundary = 0;
-Mesh.Algorithm                  = 6; // Frontal-Delaunay (see sphere_graded.geo)
-Mesh.RecombinationAlgorithm     = 2; // simple full-quad (see sphere_graded.geo)
-Mesh.SubdivisionAlgorithm       = 1; // all quadrilaterals
-Mesh.Smoothing                  = 5;
-Recombine Surface {cylinder, block};
+contact_points[]  = {pole, origin};
+cylinder_curves[] = {lower_arc, upper_arc, cylinder_axis};
+cylinder_points[] = {pole, equator, summit};
+block_curves[]    = {block_bottom, block_side, block_top, block_axis};
+block_points[]    = {origin, top_corner, foot_corner, foot};
+Include "contact_zone_sizes.geo.inc";
 
 // Physical surface b = body b; every physical curve is one boundary of one body, a circle or a
 // straight line.

@@ -322,11 +322,28 @@ template <int dim>
 std::vector<double>
 ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) const
 {
-  if (geometry == nullptr)
-    return {};
   std::vector<double> forces(pairs.size(), 0.);
   for (unsigned int k = 0; k < pairs.size(); ++k)
     forces[k] = pair_force(k);
+  return pressures_of(displacement, forces);
+}
+
+template <int dim>
+std::vector<double> ContactConstraints<dim>::shear_tractions(const Vector<double>& displacement,
+                                                             const unsigned int component) const
+{
+  std::vector<double> forces(pairs.size(), 0.);
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+    forces[k] = tangential_force(k)[component];
+  return pressures_of(displacement, forces);
+}
+
+template <int dim>
+std::vector<double> ContactConstraints<dim>::pressures_of(const Vector<double>& displacement,
+                                                          const std::vector<double>& forces) const
+{
+  if (geometry == nullptr)
+    return {};
   return geometry->contact_pressures(BorderDisplacement<dim>{contact_border, displacement}, forces);
 }
 

@@ -161,6 +161,18 @@ std::vector<Tensor<1, dim>> CoulombFriction<dim>::friction_directions(const unsi
 }
 
 template <int dim>
+Tensor<1, dim> CoulombFriction<dim>::tangential_force(const unsigned int pair,
+                                                      const Vector<double>& multipliers,
+                                                      const MultiplierBlock& block) const
+{
+  Tensor<1, dim> force;
+  if (block.n_components(pair) > 1)
+    for (unsigned int alpha = 0; alpha + 1 < dim; ++alpha)
+      force += multipliers[block.index(pair, alpha + 1)] * tangents[pair][alpha];
+  return force;
+}
+
+template <int dim>
 double CoulombFriction<dim>::slip(const unsigned int pair,
                                   const unsigned int alpha,
                                   const Vector<double>& u) const

@@ -185,16 +185,26 @@ ContactFields<dim>::pressure_samples(const std::vector<double>& pressures,
 {
   const ContactBorder<dim>& border         = contact.border();
   const Vector<double> border_displacement = border.gather(displacement);
+  std::vector<std::vector<double>> shear(dim);
+  if (contact.has_friction())
+    for (unsigned int d = 0; d < dim; ++d)
+      shear[d] = contact.shear_tractions(border_displacement, d);
   std::vector<typename FieldOutput<dim>::PressureSample> samples;
   for (unsigned int k = 0; k < contact.n_pairs(); ++k)
   {
     const Node<dim>& slave = contact.candidate_pairs()[k].slave;
+    Tensor<1, dim> shear_traction;
+    for (unsigned int d = 0; d < dim; ++d)
+      shear_traction[d] = shear[d].empty() ? 0. : shear[d][k];
     samples.push_back({border.volume_node(slave.dofs[0] / dim),
                        current_position(slave, border_displacement),
                        contact.gap(k, border_displacement),
                        contact.pair_force(k),
                        pressures[k],
-                       contact.is_active(k)});
+                       contact.is_active(k),
+                       contact.tangential_force(k),
+                       shear_traction,
+                       contact.is_sliding(k)});
   }
   return samples;
 }

@@ -288,7 +288,8 @@ void FieldOutput<dim>::write_profile(const double time,
 
 template <int dim>
 void FieldOutput<dim>::write_contact_pressure(const double time,
-                                              const std::vector<PressureSample>& samples) const
+                                              const std::vector<PressureSample>& samples,
+                                              const bool with_friction) const
 {
   std::ostringstream name;
   name << directory << "/contact_pressure_t" << time << ".csv";
@@ -296,13 +297,29 @@ void FieldOutput<dim>::write_contact_pressure(const double time,
   const std::string axes = "xyz";
   for (unsigned int d = 0; d < dim; ++d)
     file << axes[d] << ",";
-  file << "gap,multiplier,pressure,active\n" << std::setprecision(15);
+  file << "gap,multiplier,pressure,active";
+  if (with_friction)
+  {
+    for (const std::string quantity : {",tangential_force_", ",shear_"})
+      for (unsigned int d = 0; d < dim; ++d)
+        file << quantity << axes[d];
+    file << ",sliding";
+  }
+  file << '\n' << std::setprecision(15);
   for (const auto& sample : samples)
   {
     for (unsigned int d = 0; d < dim; ++d)
       file << sample.position[d] << ",";
     file << sample.gap << "," << sample.multiplier << "," << sample.pressure << ","
-         << (sample.active ? 1 : 0) << '\n';
+         << (sample.active ? 1 : 0);
+    if (with_friction)
+    {
+      for (const Tensor<1, dim>* vector : {&sample.tangential_force, &sample.shear})
+        for (unsigned int d = 0; d < dim; ++d)
+          file << "," << (*vector)[d];
+      file << "," << (sample.sliding ? 1 : 0);
+    }
+    file << '\n';
   }
 }
 

@@ -243,7 +243,7 @@ void StepRecorder<dim>::write_fields(const unsigned int frame,
     {
       field_output->write_profile(time, all_nodes, displacement, velocity, acceleration);
       if (surface_contact)
-        field_output->write_contact_pressure(time, samples);
+        field_output->write_contact_pressure(time, samples, contact.has_friction());
     }
   }
 }

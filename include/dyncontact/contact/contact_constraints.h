@@ -290,7 +290,31 @@ public:
    */
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
+  /**
+   * The tangential (friction) force of candidate `pair` [force], a vector in its tangent plane:
+   * its tangential multipliers times the force per multiplier if it is active, else zero (and
+   * zero without friction).
+   */
+  Tensor<1, dim> tangential_force(unsigned int pair) const
+  {
+    return active[pair] && friction.any()
+               ? force_factor * friction.tangential_force(pair, multiplier_values, block)
+               : Tensor<1, dim>();
+  }
+
+  /**
+   * Component `component` of the shear traction at every pair [force/area], consistent with the
+   * tangential forces (tangential_force()) as contact_pressures() is with the normal ones; empty
+   * for pairs with fixed normals.
+   */
+  std::vector<double> shear_tractions(const Vector<double>& displacement,
+                                      unsigned int component) const;
+
 private:
+  /** ContactGeometry::contact_pressures() of the per-pair `forces` at `displacement`. */
+  std::vector<double> pressures_of(const Vector<double>& displacement,
+                                   const std::vector<double>& forces) const;
+
   /** g_k(u) - g_k(reference) or g_k(u): what the solve constrains (see hold_gaps()). */
   double constraint_gap(unsigned int pair, const Vector<double>& displacement) const;
 

@@ -133,6 +133,14 @@ public:
   void set_bases(const std::vector<double>& flat);
 
   /**
+   * The tangential force of `pair` as a vector, sum_alpha lambda_t,alpha t_alpha [multiplier
+   * units], from `multipliers` (the block's layout); zero for a pair without friction.
+   */
+  Tensor<1, dim> tangential_force(unsigned int pair,
+                                  const Vector<double>& multipliers,
+                                  const MultiplierBlock& block) const;
+
+  /**
    * The tangents of `pair` along which it carries friction (its basis of the step's start, less
    * the directions of fixed DoFs): dim - 1 at most, none without friction.
    */

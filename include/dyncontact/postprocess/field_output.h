@@ -78,14 +78,21 @@ public:
     double multiplier; ///< the pair's nodal contact force (compression positive), zero if inactive
     double pressure;   ///< consistent contact pressure, see NodeToNodeContact::contact_pressures()
     bool active;
+    /// with friction: the pair's tangential force [force] and the consistent shear traction
+    /// [force/area] (ContactConstraints::shear_tractions()), zero without
+    Tensor<1, dim> tangential_force, shear;
+    bool sliding; ///< with friction: the pair slides (ContactConstraints::is_sliding())
   };
 
   /**
    * Writes `contact_pressure_t<time>.csv`: per candidate pair the current coordinates of its
    * body-A node, the gap, the multiplier (nodal force), the contact pressure and whether it is
-   * active.
+   * active; `with_friction`, also the tangential force and shear traction components
+   * (tangential_force_x, ..., shear_x, ...) and whether it slides (`sliding`).
    */
-  void write_contact_pressure(double time, const std::vector<PressureSample>& samples) const;
+  void write_contact_pressure(double time,
+                              const std::vector<PressureSample>& samples,
+                              bool with_friction) const;
 
   /**
    * Writes the faces of the contact surfaces as `contact_surface_<frame>.<rank>.vtu` and
