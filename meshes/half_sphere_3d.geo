@@ -14,16 +14,21 @@
 //   NR           cells across each shell block radially (cube face to sphere), integer >= 1  (4)
 //   PoleGrading  largest / smallest cell edge along the edges graded toward the contact pole,
 //                1 <= PoleGrading <= 10; 1 is uniform                                        (1)
+//   TopCap       1: the sphere's top cap (the cube face opposite the pole, latitudes above
+//                35 degrees) is physical surface 3, a face to hold or move (a Dirichlet
+//                boundary: a ball pressed by a rigid holder); 0: it is part of surface 2     (0)
 //
 // Physical groups (read by dyncontact as material and boundary ids, see gmsh_mesh.h):
 //   Physical Volume  1      the body (16 volumes)
 //   Physical Surface 1      the symmetry plane y = 0 (a disc)
-//   Physical Surface 2      the sphere (half of it; the contact surface)
+//   Physical Surface 2      the sphere (half of it; the contact surface), less the top cap if
+//                           TopCap = 1
+//   Physical Surface 3      with TopCap = 1: the top cap
 
 DefineConstant[
   R = {8, Name "Parameters/R"}, CentreZ = {8, Name "Parameters/CentreZ"},
   N = {6, Name "Parameters/N"}, NR = {4, Name "Parameters/NR"},
-  PoleGrading = {1, Name "Parameters/PoleGrading"}
+  PoleGrading = {1, Name "Parameters/PoleGrading"}, TopCap = {0, Name "Parameters/TopCap"}
 ];
 
 If (R <= 0)
@@ -35,6 +40,9 @@ EndIf
 If (PoleGrading < 1 || PoleGrading > 10)
   Error("half_sphere_3d.geo: PoleGrading = %g, but it must be in [1, 10]", PoleGrading);
 EndIf
+If (TopCap != 0 && TopCap != 1)
+  Error("half_sphere_3d.geo: TopCap = %g, but it must be 0 or 1", TopCap);
+EndIf
 
 Geometry.CopyMeshingMethod = 1;
 Include "half_ball.geo.inc";
@@ -42,6 +50,21 @@ ball_turn = 0;
 ball_centre[] = {0, 0, CentreZ};
 Call HalfBall; // sets CentreZ = 0 to build at the origin, then moves the ball to ball_centre[]
 
+// The top cap: the sphere's patches that lie wholly above the centre (the cube face's).
+top_cap[] = {};
+If (TopCap == 1)
+  For k In {0 : #ball_sphere[] - 1}
+    box[] = BoundingBox Surface{ball_sphere[k]};
+    If (box[2] > CentreZ + 1e-9 * R)
+      top_cap[] += {ball_sphere[k]};
+    EndIf
+  EndFor
+  ball_sphere[] -= {top_cap[]};
+EndIf
+
 Physical Volume("ball", 1)    = {ball_volumes[]};
 Physical Surface("y0", 1)     = {ball_y0[]};
 Physical Surface("sphere", 2) = {ball_sphere[]};
+If (TopCap == 1)
+  Physical Surface("top cap", 3) = {top_cap[]};
+EndIf
