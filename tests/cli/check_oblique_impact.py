@@ -3,6 +3,9 @@ against rigid-body impulse theory.
 
 Usage: check_oblique_impact.py DIRECTORY MU V THETA R
 
+Writes DIRECTORY/oblique_impact.csv beside the run: quantity, computed, reference (rigid-body
+gross slip with the run's e), difference, relative_difference.
+
 The half ball (its history's momenta and angular momenta are the half's, mass m) meets the plane
 at the speed V, THETA degrees from the normal: V_t = V sin THETA along x, V_n = V cos THETA along -z.
 Above the threshold tan THETA = MU (1 + e) (1 + m R^2 / I) it slides throughout, so
@@ -42,9 +45,20 @@ inertia = 0.4 * mass * radius**2
 print(f"half ball: m = {mass:.6g}, e = {restitution:.6g}, threshold {math.degrees(math.atan(mu * (1 + restitution) * 3.5)):.3f} degrees")
 impulse_t = last["momentum_1_x"] - first["momentum_1_x"]
 impulse_n = last["momentum_1_z"] - first["momentum_1_z"]
-check("tangential / normal impulse", -impulse_t / impulse_n, mu, 1e-6)
-check("tangential velocity after", last["momentum_1_x"] / mass, v_t - mu * (1 + restitution) * v_n, 1e-2)
-check("spin after", last["angular_momentum_y"] / inertia, mu * (1 + restitution) * v_n * mass * radius / inertia, 1e-2)
+comparisons = [
+    ("tangential / normal impulse", -impulse_t / impulse_n, mu, 1e-6),
+    ("tangential velocity after", last["momentum_1_x"] / mass, v_t - mu * (1 + restitution) * v_n, 1e-2),
+    ("spin after", last["angular_momentum_y"] / inertia,
+     mu * (1 + restitution) * v_n * mass * radius / inertia, 1e-2),
+]
+with open(f"{directory}/oblique_impact.csv", "w") as table:
+    table.write("quantity,computed,reference,difference,relative_difference\n")
+    table.write(f"restitution e (normal rebound),{restitution:.15g},,,\n")
+    for name, computed, reference, _ in comparisons:
+        table.write(f"{name},{computed:.15g},{reference:.15g},{computed - reference:.6g},"
+                    f"{(computed - reference) / reference:.6g}\n")
+for name, computed, reference, tolerance in comparisons:
+    check(name, computed, reference, tolerance)
 drops = [a["frictional_dissipation"] - b["frictional_dissipation"] for a, b in zip(rows, rows[1:])]
 check("largest decrease of frictional_dissipation / E_0", max(0.0, max(drops)) / first["total_energy"], 0.0, 1e-14, False)
 balance = [r["algorithmic_energy"] + r["frictional_dissipation"] for r in rows if r["active_constraints"] > 0]
