@@ -329,6 +329,25 @@ ContactConstraints<dim>::contact_pressures(const Vector<double>& displacement) c
 }
 
 template <int dim>
+unsigned int ContactConstraints<dim>::first_prescribed_active_pair() const
+{
+  for (unsigned int k = 0; k < pairs.size(); ++k)
+  {
+    bool prescribed = false;
+    if (active[k] && !prescribed_dofs.empty())
+      pairs[k].for_each_node(
+          [&](const Node<dim>& node, double)
+          {
+            for (unsigned int d = 0; d < dim; ++d)
+              prescribed = prescribed || prescribed_dofs[node.dofs[d]];
+          });
+    if (prescribed)
+      return k;
+  }
+  return pairs.size();
+}
+
+template <int dim>
 std::vector<double> ContactConstraints<dim>::shear_tractions(const Vector<double>& displacement,
                                                              const unsigned int component) const
 {

@@ -195,20 +195,21 @@ void BodyImpulses<dim>::accumulate(const StepState& start,
                          });
         }
         // At a fixed DoF the load and the reaction together are M a + Q: their work on a prescribed
-        // motion counts (a support's does not move), weighted as the balance takes them.
-        const auto inertia_and_elastic = [&](const StepState& at)
-        { return mass[i] * at.acceleration.local_element(j) + at.internal_force.local_element(j); };
+        // motion counts (a support's does not move), weighted as the balance takes them (Newmark:
+        // gamma on the new state; a dissipative member: 1 - alpha_m, 1 - alpha_f).
         const bool at_balance = step_load.size() > 0;
         double force          = at_balance ? step_load.local_element(j)
                                            : (1. - gamma) * start.external_force.local_element(j) +
                                         gamma * state.external_force.local_element(j);
-        if (is_fixed_dof[i] && at_balance)
-          force = (1. - integrator.alpha_m()) * mass[i] * state.acceleration.local_element(j) +
-                  integrator.alpha_m() * mass[i] * start.acceleration.local_element(j) +
-                  (1. - integrator.alpha_f()) * state.internal_force.local_element(j) +
-                  integrator.alpha_f() * start.internal_force.local_element(j);
-        else if (is_fixed_dof[i])
-          force = (1. - gamma) * inertia_and_elastic(start) + gamma * inertia_and_elastic(state);
+        if (is_fixed_dof[i])
+        {
+          const double w_a = at_balance ? 1. - integrator.alpha_m() : gamma,
+                       w_q = at_balance ? 1. - integrator.alpha_f() : gamma;
+          force            = mass[i] * (w_a * state.acceleration.local_element(j) +
+                             (1. - w_a) * start.acceleration.local_element(j)) +
+                  w_q * state.internal_force.local_element(j) +
+                  (1. - w_q) * start.internal_force.local_element(j);
+        }
         work_sum[0] +=
             force * (state.displacement.local_element(j) - start.displacement.local_element(j));
       });

@@ -4,7 +4,6 @@
 #include <dyncontact/simulation/problem_fingerprint.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
@@ -58,15 +57,12 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   kinematics = model.create_kinematics();
   is_fixed_dof.assign(dof_handler.n_dofs(), false);
   std::vector<types::global_dof_index> rank_fixed_dofs = model.fixed_dofs(*nodes);
-  const std::vector<FixedBoundary> fixed_boundaries    = model.fixed_boundaries();
+  const std::vector<types::global_dof_index> axis_dofs =
+      join_over_ranks(MPI_COMM_WORLD, rank_fixed_dofs);
+  const std::vector<FixedBoundary> fixed_boundaries = model.fixed_boundaries();
   for (const FixedBoundary& boundary : fixed_boundaries)
-  {
-    ComponentMask mask(dim, false);
-    for (const unsigned int component : boundary.components)
-      mask.set(component, true);
-    for (const auto dof : DoFTools::extract_boundary_dofs(dof_handler, mask, {boundary.boundary}))
+    for (const auto dof : held_dofs(dof_handler, boundary))
       rank_fixed_dofs.push_back(dof);
-  }
   std::vector<types::global_dof_index> fixed_dofs =
       join_over_ranks(MPI_COMM_WORLD, rank_fixed_dofs);
   std::sort(fixed_dofs.begin(), fixed_dofs.end());
@@ -77,8 +73,8 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
     is_fixed_dof[dof] = true;
   }
   constraints.close();
-  prescribed =
-      std::make_unique<PrescribedDisplacements<dim>>(dof_handler, *nodes, fixed_boundaries);
+  prescribed = std::make_unique<PrescribedDisplacements<dim>>(
+      dof_handler, *nodes, fixed_boundaries, axis_dofs);
   bodies = std::make_unique<ElasticBodies<dim>>(
       dof_handler, mapping, *kinematics, model.body_materials(), &constraints);
   loads = std::make_unique<ExternalLoads<dim>>(

@@ -39,6 +39,8 @@ ContactProblem<dim>::ContactProblem(ProblemModel<dim>& model,
         "Contact/dynamics = " + contact_dynamics_names().name(parameters.contact.dynamics) +
         " does not carry friction (yet): with a friction coefficient > 0 choose "
         "Contact/dynamics = mass-redistribution, taylor-papadopoulos or none.");
+  contact->set_prescribed_dofs(
+      contact->border().gather(d.prescribed->flags(d.dof_handler.n_dofs())));
   contact->set_fixed_dofs(contact->border().gather(d.is_fixed_dof));
   contact->set_turning_normals(dynamics->turns_normals());
   // The multipliers as the contact force of the balance the step solves, on every integrator and

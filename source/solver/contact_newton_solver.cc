@@ -86,14 +86,16 @@ ContactNewtonSolver<dim>::solve(const DistributedVector& predictor,
                                 const double inertia_factor,
                                 const DistributedVector& external_force,
                                 const DistributedVector& last_displacement,
+                                const DistributedVector& restart_displacement,
                                 DistributedVector& increment)
 {
   Iteration iteration{{predictor, inertia_factor, external_force}, increment};
-  iteration.restart_increment = last_displacement;
+  iteration.restart_increment = restart_displacement;
   iteration.restart_increment -= predictor;
-  if (alpha_f != 0.) // u_n as predictor + (u_n - u~), the configuration Newton restarts from
+  if (alpha_f != 0.) // u_n, rounded as u~ + (u_n - u~), the restart configuration without Dirichlet
   {
-    DistributedVector configuration = iteration.restart_increment;
+    DistributedVector configuration = last_displacement;
+    configuration -= predictor;
     configuration += predictor;
     iteration.last_configuration = contact.border().gather(configuration);
   }

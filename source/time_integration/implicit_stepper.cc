@@ -108,9 +108,22 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
       solver.solve(predictor,
                    integrator.inertia_factor(),
                    effective_force.size() > 0 ? effective_force : current.external_force,
+                   before.displacement,
                    restart_configuration,
                    increment);
   current.internal_force.copy_locally_owned_data_from(solver.internal_force());
+  const unsigned int pair = contact.first_prescribed_active_pair();
+  if (pair < contact.n_pairs())
+  {
+    const Point<dim>& node = contact.candidate_pairs()[pair].slave.position;
+    std::string where;
+    for (unsigned int d = 0; d < dim; ++d)
+      where += (d == 0 ? "(" : ", ") + format_number(node[d]);
+    throw SolverFailure("the contact pair of the slave node at " + where +
+                        ") closed where a Dirichlet boundary prescribes the motion, which is not "
+                        "supported (its constraint lacks the DoF that moves it): prescribe a "
+                        "boundary away from the contact surfaces");
+  }
   return report.linear_solves;
 }
 

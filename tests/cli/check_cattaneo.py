@@ -126,9 +126,9 @@ with open(f"{directory}/cattaneo.csv", "w", newline="") as handle:
         writer.writerow({k: f"{v:.10g}" for k, v in sample.items()})
 print(f"wrote {directory}/cattaneo.csv ({len(samples)} times)")
 
-tangential = [s for s in samples if s["Q_over_muP"] > 0.01]
+loaded = [s for s in samples if s["Q_over_muP"] > 0.01]
 for target in (0.3, 0.6, 0.9):
-    s = min(tangential, key=lambda s: abs(s["Q_over_muP"] - target))
+    s = min(loaded, key=lambda s: abs(s["Q_over_muP"] - target))
     label = f"Q/(mu P) = {s['Q_over_muP']:.3f} (t = {s['time']:g})"
     checks.bound(f"{label}: |Q/(mu P) - {target}|", abs(s["Q_over_muP"] - target), 0.05)
     checks.bound(f"{label}: |a - a_Hertz| / H ({s['a_measured']:.4f} vs {s['a_hertz']:.4f})",

@@ -146,8 +146,8 @@ struct TwoSprings
     const DistributedVector u_tilde = nodal(predictor);
     DistributedVector increment     = nodal(guess);
     increment -= u_tilde;
-    linear_solves =
-        solver->solve(u_tilde, 1., nodal(external), nodal(last), increment).linear_solves;
+    linear_solves = solver->solve(u_tilde, 1., nodal(external), nodal(last), nodal(last), increment)
+                        .linear_solves;
     increment += u_tilde;
     return gather_whole(increment);
   }

@@ -97,6 +97,22 @@ public:
   void set_fixed_dofs(std::vector<bool> fixed) { friction.set_fixed_dofs(std::move(fixed)); }
 
   /**
+   * The border DoFs whose motion a Dirichlet boundary prescribes (per border DoF), for
+   * first_prescribed_active_pair().
+   */
+  void set_prescribed_dofs(std::vector<bool> prescribed)
+  {
+    prescribed_dofs = std::move(prescribed);
+  }
+
+  /**
+   * The first active pair one of whose nodes has a prescribed DoF (set_prescribed_dofs()), or
+   * n_pairs() if none. Such a pair is not supported: its constraint row lacks the DoF that moves
+   * it, and the reaction there would carry its contact force.
+   */
+  unsigned int first_prescribed_active_pair() const;
+
+  /**
    * Whether candidate `pair` slides: active, with friction, on the slip branch of Coulomb's law
    * (CoulombFriction).
    */
@@ -291,14 +307,15 @@ public:
   std::vector<double> contact_pressures(const Vector<double>& displacement) const;
 
   /**
-   * The tangential (friction) force of candidate `pair` [force], a vector in its tangent plane:
-   * its tangential multipliers times the force per multiplier if it is active, else zero (and
-   * zero without friction).
+   * The friction force on the slave node (body A) of candidate `pair` [force], a vector in its
+   * tangent plane: minus its tangential multipliers along their tangents (the slave's coefficient
+   * in the slip is -1) times the force per multiplier if it is active, else zero (and zero
+   * without friction). The master side carries the opposite force.
    */
   Tensor<1, dim> tangential_force(unsigned int pair) const
   {
     return active[pair] && friction.any()
-               ? force_factor * friction.tangential_force(pair, multiplier_values, block)
+               ? -force_factor * friction.tangential_force(pair, multiplier_values, block)
                : Tensor<1, dim>();
   }
 
@@ -346,7 +363,8 @@ private:
   std::vector<bool> held_gaps;  ///< hold_gaps(): empty, none
   Vector<double> gap_reference; ///< hold_gaps(): the configuration whose gaps are held
   CoulombFriction<dim> friction;
-  double force_factor  = 1.;   ///< see set_force_per_multiplier()
-  bool turning_normals = true; ///< see set_turning_normals()
+  double force_factor = 1.;          ///< see set_force_per_multiplier()
+  std::vector<bool> prescribed_dofs; ///< see set_prescribed_dofs(); empty: none
+  bool turning_normals = true;       ///< see set_turning_normals()
 };
 } // namespace dyncontact

@@ -5,44 +5,58 @@
 #include <dyncontact/discretization/node_index.h>
 #include <dyncontact/models/problem_model.h>
 
+#include <deal.II/base/index_set.h>
 #include <deal.II/base/parsed_function.h>
 #include <deal.II/dofs/dof_handler.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace dyncontact
 {
+/** The DoFs of the components `boundary` holds on its faces, this rank's (locally relevant). */
+template <int dim>
+IndexSet held_dofs(const DoFHandler<dim>& dof_handler, const FixedBoundary& boundary);
+
 /**
  * The displacement components that Dirichlet boundaries prescribe, u_i = g_i(X, t) at the nodes of
  * their faces (FixedBoundary with a displacement; X the reference position), on this rank's owned
  * DoFs. These DoFs are among the fixed DoFs (BodyDiscretization's constraints), so Newton's updates
  * leave them alone: the step puts g(t_{n+1}) into its initial guess (ImplicitStepper), and the
- * integrator's rates of u follow. A DoF that several boundaries hold takes the first in
- * ProblemModel::fixed_boundaries() order (symmetry planes and supports, at zero, come first).
+ * integrator's rates of u follow. A DoF that several boundaries hold takes the first: the DoFs
+ * held at zero (the axis, symmetry planes, supports) come before every Dirichlet boundary, which
+ * come in ProblemModel::fixed_boundaries() order. g should be continuously differentiable in time
+ * (twice for a smooth reaction): the trapezoidal rule carries a kink of g as a velocity that
+ * alternates from step to step ever after.
+ *
+ * Collective: the constructor (which throws the same InputError on every rank) and flags().
  */
 template <int dim>
 class PrescribedDisplacements
 {
 public:
   /**
-   * The entries of `boundaries` with a displacement. Throws InputError naming the boundary's
-   * section if g(X, 0) is not zero at one of its nodes (the bodies start undeformed), to 1e-12 of
-   * the largest distance of the boundary's nodes from the origin.
+   * The entries of `boundaries` with a displacement, less `zero_dofs` (the DoFs held at zero
+   * besides the boundaries', every rank's). Throws InputError naming the first boundary where g(X,
+   * 0) is not zero (the bodies start undeformed), to 1e-12 of the largest distance of its nodes
+   * from the origin.
    */
   PrescribedDisplacements(const DoFHandler<dim>& dof_handler,
                           const NodeIndex<dim>& nodes,
-                          const std::vector<FixedBoundary>& boundaries);
+                          const std::vector<FixedBoundary>& boundaries,
+                          const std::vector<types::global_dof_index>& zero_dofs);
 
-  /** Whether this rank owns no prescribed DoF. */
-  bool empty() const { return entries.empty(); }
+  /** Per DoF of the mesh (`n_dofs` entries): prescribed, on any rank. Collective. */
+  std::vector<bool> flags(types::global_dof_index n_dofs) const;
 
   /** Sets the owned prescribed entries of `u` (a volume vector) to g(X, t) [length]. */
   void set_displacement(double t, DistributedVector& u) const;
 
   /**
-   * Sets the owned prescribed entries of `v` and `a` to dg/dt and d2g/dt2 at t, by central
-   * differences with step `h` [time] (error O(h^2), round-off O(eps |g| / h^2)).
+   * Sets the owned prescribed entries of `v` and `a` to dg/dt and d2g/dt2 at t, by one-sided
+   * differences forward from t with step `h` [time] (error O(h^2) for v, O(h) for a; g is not
+   * evaluated before t, where an expression written for t >= 0 need not hold).
    */
   void set_rates(double t, double h, DistributedVector& v, DistributedVector& a) const;
 
@@ -52,12 +66,19 @@ private:
     types::global_dof_index dof;
     unsigned int component;
     Point<dim> position;
-    unsigned int function; ///< index in functions
+    unsigned int boundary; ///< index in `boundaries` (and `functions`)
   };
 
   /** g_component(position, t) of `entry`. */
   double value(const Entry& entry, double t) const;
 
+  /** Throws, on every rank, `message(b)` for the lowest b that any rank flagged. Collective. */
+  template <class Message>
+  void throw_on_every_rank(unsigned int flagged, const Message& message) const;
+
+  MPI_Comm communicator;
+  std::vector<FixedBoundary> boundaries;
+  /// per boundary: its g (null for those held at zero)
   std::vector<std::shared_ptr<Functions::ParsedFunction<dim>>> functions;
   std::vector<Entry> entries;
 };

@@ -78,8 +78,8 @@ public:
     double multiplier; ///< the pair's nodal contact force (compression positive), zero if inactive
     double pressure;   ///< consistent contact pressure, see NodeToNodeContact::contact_pressures()
     bool active;
-    /// with friction: the pair's tangential force [force] and the consistent shear traction
-    /// [force/area] (ContactConstraints::shear_tractions()), zero without
+    /// with friction: the friction force on the slave node [force] and the consistent shear
+    /// traction on body A [force/area] (ContactConstraints::shear_tractions()), zero without
     Tensor<1, dim> tangential_force, shear;
     bool sliding; ///< with friction: the pair slides (ContactConstraints::is_sliding())
   };

@@ -103,8 +103,10 @@ public:
    * predictor u~ (initial guess: the value `increment` holds on entry, usually zero); on exit
    * u_{n+1} = predictor + increment. The contact multipliers and active set are updated in place.
    * Unless the initial guess is already the answer, Newton iterates from the last converged
-   * configuration `last_displacement` u_n instead (the increment u_n - u~; see the class
-   * documentation). The vectors hold the owned DoFs (the layout of dof_layout()).
+   * configuration instead: `restart_displacement`, u_n with the prescribed DoFs at their value at
+   * t_{n+1} (the increment restart_displacement - u~; see the class documentation), while the
+   * master points of a dissipative member's balance are placed from `last_displacement` u_n. The
+   * vectors hold the owned DoFs (the layout of dof_layout()).
    * Throws SolverFailure if Newton does not converge within the iteration limit or the linear
    * solver fails.
    */
@@ -112,6 +114,7 @@ public:
                double inertia_factor,
                const DistributedVector& external_force,
                const DistributedVector& last_displacement,
+               const DistributedVector& restart_displacement,
                DistributedVector& increment);
 
   /** The layout of the displacement DoFs' vectors: each rank its owned DoFs. */

@@ -29,8 +29,8 @@ namespace dyncontact
  * contact border (ContactBorder) and writes back what it changes. It owns the current StepState,
  * whose vectors, like the predictor and the increment, hold each rank's owned DoFs (the layout of
  * the solver's dof_layout()); the contact geometry of u_n is updated from its displacement on the
- * contact border. The integrator, lumped mass (whole), fixed DoFs, loads,
- * contact, its treatment and the Newton solver are the caller's and must outlive it. Every
+ * contact border. The integrator, lumped mass (whole), fixed DoFs, prescribed displacements,
+ * loads, contact, its treatment and the Newton solver are the caller's and must outlive it. Every
  * member function is collective.
  */
 template <int dim>
