@@ -1,4 +1,4 @@
-"""Writes DIRECTORY/cattaneo.csv, the run of prm/cattaneo_cylinders.prm or
+"""Writes DIRECTORY/cattaneo.csv and cattaneo.png, the run of prm/cattaneo_cylinders.prm or
 prm/cattaneo_sphere_3d.prm beside Hertz and Cattaneo-Mindlin, and checks it (issue 29, B).
 
 Usage: check_cattaneo.py DIRECTORY MU E NU R H [--sphere]
@@ -70,10 +70,46 @@ def time_of(name):
     return float(os.path.basename(name)[len("contact_pressure_t"):-len(".csv")])
 
 
+def plot(chosen):
+    """DIRECTORY/cattaneo.png: the pressure and the shear traction of the active nodes at the
+    chosen times against Hertz's and Cattaneo-Mindlin's, over the contact (x / a or r / a)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    figure, axes = plt.subplots(1, len(chosen), figsize=(5 * len(chosen), 4.2), sharey=True)
+    grid = [-1.0 + 0.002 * i for i in range(1001)]
+    for axis, s in zip(axes, chosen):
+        a, c = s["a_hertz"], s["c_cattaneo"]
+        hertz = [math.sqrt(max(0.0, 1.0 - x * x)) for x in grid]
+        stick = [math.sqrt(max(0.0, 1.0 - x * x)) - (c / a) * math.sqrt(max(0.0, 1.0 - (x * a / c) ** 2))
+                 for x in grid]
+        axis.plot(grid, hertz, "k-", lw=1, label="Hertz p / p0 (slip zone: q / (mu p0))")
+        axis.plot(grid, stick, "C1-", lw=1, label="Cattaneo-Mindlin q / (mu p0)")
+        points = nodes[s["time"]]
+        xs = [x / a for x, *_ in points]
+        axis.plot(xs, [p for _, p, _, _ in points], "k.", ms=4, label="run: pressure")
+        for flag, colour, text in ((1, "C3", "run: shear, sliding"), (0, "C0", "run: shear, stuck")):
+            axis.plot([x / a for x, _, _, f in points if f == flag],
+                      [q for _, _, q, f in points if f == flag], "o", color=colour, ms=3.5,
+                      mfc="none", label=text)
+        axis.axvspan(-c / a, c / a, color="C0", alpha=0.07)
+        axis.set_xlim(-1.15 if not sphere else 0.0, 1.15)
+        axis.set_xlabel("r / a" if sphere else "(x - x0) / a")
+        axis.set_title(f"Q / (mu P) = {s['Q_over_muP']:.2f}, t = {s['time']:g}: c = {s['c_measured']:.3f}"
+                       f" (Cattaneo {c:.3f})", fontsize=9)
+        axis.grid(alpha=0.3)
+    axes[0].set_ylabel("traction / p0, shear / (mu p0)")
+    axes[0].legend(fontsize=7, loc="lower center")
+    figure.tight_layout()
+    figure.savefig(f"{directory}/cattaneo.png", dpi=110)
+    plt.close(figure)
+
+
 history = read_history(directory)
 kinetic_fraction = {row["time"]: row["kinetic_energy"] / row["strain_energy"]
                     for row in history if row["strain_energy"] > 0}
 samples = []
+nodes = {}  # per time: (x - x0 or r, p / p0, q / (MU p0), sliding) of the active nodes
 for name in sorted(glob.glob(f"{directory}/contact_pressure_t*.csv"), key=time_of):
     with open(name, newline="") as handle:
         rows = [{k: float(v) for k, v in row.items()} for row in csv.DictReader(handle)]
@@ -112,6 +148,9 @@ for name in sorted(glob.glob(f"{directory}/contact_pressure_t*.csv"), key=time_o
                       default=0.0)
     law_stuck = max((tangential(r) - mu * r["multiplier"] for r in stuck), default=0.0) / force_scale
     t = time_of(name)
+    nodes[t] = [(distance(r) if sphere else r["x"] - x0, r["pressure"] / p0,
+                 sign * math.copysign(math.hypot(r["shear_x"], r["shear_y"]), r["shear_x"]) / (mu * p0),
+                 r["sliding"]) for r in active]
     samples.append(dict(time=t, P=P, Q=Q, Q_over_muP=ratio, a_hertz=a, a_measured=a_measured,
                         c_cattaneo=c, c_measured=c_measured, cell_edge=h, active_nodes=len(active),
                         sliding_nodes=len(sliding), shear_error_slip_zone=shear_error,
@@ -124,11 +163,13 @@ with open(f"{directory}/cattaneo.csv", "w", newline="") as handle:
     writer.writeheader()
     for sample in samples:
         writer.writerow({k: f"{v:.10g}" for k, v in sample.items()})
-print(f"wrote {directory}/cattaneo.csv ({len(samples)} times)")
+print(f"wrote {directory}/cattaneo.csv ({len(samples)} times) and, below, cattaneo.png")
 
 loaded = [s for s in samples if s["Q_over_muP"] > 0.01]
+chosen = []
 for target in (0.3, 0.6, 0.9):
     s = min(loaded, key=lambda s: abs(s["Q_over_muP"] - target))
+    chosen.append(s)
     label = f"Q/(mu P) = {s['Q_over_muP']:.3f} (t = {s['time']:g})"
     checks.bound(f"{label}: |Q/(mu P) - {target}|", abs(s["Q_over_muP"] - target), 0.05)
     checks.bound(f"{label}: |a - a_Hertz| / H ({s['a_measured']:.4f} vs {s['a_hertz']:.4f})",
@@ -140,6 +181,7 @@ for target in (0.3, 0.6, 0.9):
           f"{s['pressure_error']:.3f}; kinetic / strain energy {s['kinetic_energy_fraction']:.2g})")
     checks.bound(f"{label}: sliding nodes |lambda_t| - mu lambda_n", s["coulomb_law_sliding"], 1e-5)
     checks.bound(f"{label}: stuck nodes |lambda_t| - mu lambda_n", s["coulomb_law_stuck"], 1e-5)
+plot(chosen)
 loads = [s["P"] for s in samples]
 checks.bound("P's change over the tangential phase, relative", (max(loads) - min(loads)) / max(loads),
              5e-3)

@@ -321,8 +321,10 @@ public:
 
   /**
    * Component `component` of the shear traction at every pair [force/area], consistent with the
-   * tangential forces (tangential_force()) as contact_pressures() is with the normal ones; empty
-   * for pairs with fixed normals.
+   * tangential forces (tangential_force()) as contact_pressures() is with the normal ones, on the
+   * support of that component's forces: where the component vanishes at a node of the contact
+   * zone (a symmetry plane's normal direction) its zone is smaller than the pressure's. Empty for
+   * pairs with fixed normals.
    */
   std::vector<double> shear_tractions(const Vector<double>& displacement,
                                       unsigned int component) const;
