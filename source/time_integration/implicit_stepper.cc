@@ -41,7 +41,7 @@ void ImplicitStepper<dim>::start(const Vector<double>& initial_velocity,
                        if (is_fixed_dof[i])
                          v = a = 0.;
                      });
-  // A thousandth of a step: the rates' central differences are then exact to far below the
+  // A thousandth of a step: the rates' one-sided differences are then exact to far below the
   // integrator's own error at the boundary.
   prescribed.set_rates(0., 1e-3 * integrator.time_step(), current.velocity, current.acceleration);
 }
