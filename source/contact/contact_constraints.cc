@@ -336,10 +336,13 @@ unsigned int ContactConstraints<dim>::first_prescribed_active_pair() const
     bool prescribed = false;
     if (active[k] && !prescribed_dofs.empty())
       pairs[k].for_each_node(
-          [&](const Node<dim>& node, double)
+          [&](const Node<dim>& node, const double coefficient)
           {
+            double along_prescribed = 0.;
             for (unsigned int d = 0; d < dim; ++d)
-              prescribed = prescribed || prescribed_dofs[node.dofs[d]];
+              if (prescribed_dofs[node.dofs[d]])
+                along_prescribed += pairs[k].normal[d] * pairs[k].normal[d];
+            prescribed = prescribed || (coefficient != 0. && along_prescribed > 0.5);
           });
     if (prescribed)
       return k;

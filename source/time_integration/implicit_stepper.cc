@@ -120,9 +120,10 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
     for (unsigned int d = 0; d < dim; ++d)
       where += (d == 0 ? "(" : ", ") + format_number(node[d]);
     throw SolverFailure("the contact pair of the slave node at " + where +
-                        ") closed where a Dirichlet boundary prescribes the motion, which is not "
-                        "supported (its constraint lacks the DoF that moves it): prescribe a "
-                        "boundary away from the contact surfaces");
+                        ") closed with its normal along a displacement a Dirichlet boundary "
+                        "prescribes, which is not supported (its constraint lacks the DoF that "
+                        "moves it): prescribe that boundary away from the contact surfaces or "
+                        "across their normal");
   }
   return report.linear_solves;
 }

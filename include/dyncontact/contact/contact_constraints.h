@@ -106,9 +106,11 @@ public:
   }
 
   /**
-   * The first active pair one of whose nodes has a prescribed DoF (set_prescribed_dofs()), or
-   * n_pairs() if none. Such a pair is not supported: its constraint row lacks the DoF that moves
-   * it, and the reaction there would carry its contact force.
+   * The first active pair whose normal lies mostly (more than half of n . n) along prescribed DoFs
+   * (set_prescribed_dofs()) at one of its nodes, or n_pairs() if none. Such a pair is not
+   * supported: the DoF its constraint moves there is not free, and the reaction would carry its
+   * contact force. A node prescribed across the normal (a block's corner pushed along the plane it
+   * rests on) is fine: the normal DoF stays free, and a fixed direction carries no friction.
    */
   unsigned int first_prescribed_active_pair() const;
 
