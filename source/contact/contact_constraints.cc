@@ -333,16 +333,19 @@ unsigned int ContactConstraints<dim>::first_prescribed_active_pair() const
 {
   for (unsigned int k = 0; k < pairs.size(); ++k)
   {
-    bool prescribed = false;
+    bool prescribed = false, slave = true; // for_each_node() visits the slave node first
     if (active[k] && !prescribed_dofs.empty())
       pairs[k].for_each_node(
           [&](const Node<dim>& node, const double coefficient)
           {
-            double along_prescribed = 0.;
+            const bool master_with_friction = !slave && friction_coefficient(k) > 0.;
+            slave                           = false;
+            if (std::abs(coefficient) <= 1e-8) // a master node the projection hardly weighs
+              return;
             for (unsigned int d = 0; d < dim; ++d)
               if (prescribed_dofs[node.dofs[d]])
-                along_prescribed += pairs[k].normal[d] * pairs[k].normal[d];
-            prescribed = prescribed || (coefficient != 0. && along_prescribed > 0.5);
+                prescribed = prescribed || master_with_friction ||
+                             pairs[k].normal[d] * pairs[k].normal[d] > 1e-6;
           });
     if (prescribed)
       return k;

@@ -106,11 +106,14 @@ public:
   }
 
   /**
-   * The first active pair whose normal lies mostly (more than half of n . n) along prescribed DoFs
-   * (set_prescribed_dofs()) at one of its nodes, or n_pairs() if none. Such a pair is not
-   * supported: the DoF its constraint moves there is not free, and the reaction would carry its
-   * contact force. A node prescribed across the normal (a block's corner pushed along the plane it
-   * rests on) is fine: the normal DoF stays free, and a fixed direction carries no friction.
+   * The first active pair with a prescribed DoF (set_prescribed_dofs()) that its contact force
+   * would act on, or n_pairs() if none: at a node it weighs (|c_j| > 1e-8), a prescribed DoF
+   * along which the normal has a component (n_d^2 > 1e-6), or, for a master node of a pair with
+   * friction, any prescribed DoF. Such a pair is not supported: the reaction there would carry
+   * its contact force into the external work, and its constraint could lack the DoF that moves
+   * it. A slave node prescribed exactly across the normal (a block's corner pushed along the
+   * plane it rests on) is fine: its normal DoF stays free, and a prescribed tangential direction
+   * of a slave node carries no friction, as a fixed one.
    */
   unsigned int first_prescribed_active_pair() const;
 
