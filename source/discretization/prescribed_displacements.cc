@@ -2,8 +2,6 @@
 #include <dyncontact/discretization/prescribed_displacements.h>
 
 #include <deal.II/base/mpi.h>
-#include <deal.II/dofs/dof_tools.h>
-#include <deal.II/fe/component_mask.h>
 
 #include <algorithm>
 #include <cmath>
@@ -13,30 +11,20 @@
 namespace dyncontact
 {
 template <int dim>
-IndexSet held_dofs(const DoFHandler<dim>& dof_handler, const FixedBoundary& boundary)
-{
-  ComponentMask mask(dim, false);
-  for (const unsigned int component : boundary.components)
-    mask.set(component, true);
-  return DoFTools::extract_boundary_dofs(dof_handler, mask, {boundary.boundary});
-}
-
-template <int dim>
 PrescribedDisplacements<dim>::PrescribedDisplacements(
     const DoFHandler<dim>& dof_handler,
     const NodeIndex<dim>& nodes,
     const std::vector<FixedBoundary>& boundaries,
+    const std::vector<IndexSet>& held,
     const std::vector<types::global_dof_index>& zero_dofs)
-    : communicator(dof_handler.get_communicator()), boundaries(boundaries)
+    : communicator(dof_handler.get_communicator())
 {
+  AssertDimension(held.size(), boundaries.size());
   const IndexSet& owned = dof_handler.locally_owned_dofs();
   std::set<types::global_dof_index> taken(zero_dofs.begin(), zero_dofs.end());
-  for (const FixedBoundary& boundary : boundaries)
-    if (boundary.displacement.expression.empty())
-    {
-      const IndexSet dofs = held_dofs(dof_handler, boundary);
-      taken.insert(dofs.begin(), dofs.end());
-    }
+  for (unsigned int b = 0; b < boundaries.size(); ++b)
+    if (boundaries[b].displacement.expression.empty())
+      taken.insert(held[b].begin(), held[b].end());
   // The first boundary (lowest index) whose g(X, 0) is not zero on any rank.
   unsigned int nonzero_start = std::numeric_limits<unsigned int>::max();
   for (unsigned int b = 0; b < boundaries.size(); ++b)
@@ -45,7 +33,7 @@ PrescribedDisplacements<dim>::PrescribedDisplacements(
     if (boundaries[b].displacement.expression.empty())
       continue;
     functions.back()        = boundaries[b].displacement.template create<dim>(dim);
-    const IndexSet dofs     = held_dofs(dof_handler, boundaries[b]);
+    const IndexSet& dofs    = held[b];
     const std::size_t first = entries.size();
     double extent           = 0.;
     for (const Node<dim>& node : nodes.nodes())
@@ -61,15 +49,12 @@ PrescribedDisplacements<dim>::PrescribedDisplacements(
       if (std::abs(value(entries[k], 0.)) > 1e-12 * extent)
         nonzero_start = std::min(nonzero_start, b);
   }
-  throw_on_every_rank(
-      nonzero_start,
-      [this](const unsigned int b)
-      {
-        return this->boundaries[b].section + "/Displacement/Function expression = '" +
-               this->boundaries[b].displacement.expression +
-               "' is not 0 at t = 0 on the boundary: the bodies start undeformed, so it must be 0 "
-               "at t = 0 (e.g. d * (1 - cos(pi * t / T)) / 2, a ramp from rest).";
-      });
+  const unsigned int first = Utilities::MPI::min(nonzero_start, communicator);
+  if (first != std::numeric_limits<unsigned int>::max())
+    throw InputError(boundaries[first].section + "/Displacement/Function expression = '" +
+                     boundaries[first].displacement.expression +
+                     "' is not 0 at t = 0 on the boundary: the bodies start undeformed, so it must "
+                     "be 0 at t = 0 (e.g. d * (1 - cos(pi * t / T)) / 2, a ramp from rest).");
 }
 
 template <int dim>
@@ -83,16 +68,6 @@ std::vector<bool> PrescribedDisplacements<dim>::flags(const types::global_dof_in
     for (const auto dof : part)
       prescribed[dof] = true;
   return prescribed;
-}
-
-template <int dim>
-template <class Message>
-void PrescribedDisplacements<dim>::throw_on_every_rank(const unsigned int flagged,
-                                                       const Message& message) const
-{
-  const unsigned int first = Utilities::MPI::min(flagged, communicator);
-  if (first != std::numeric_limits<unsigned int>::max())
-    throw InputError(message(first));
 }
 
 template <int dim>
@@ -125,7 +100,4 @@ void PrescribedDisplacements<dim>::set_rates(const double t,
 }
 
 DYNCONTACT_INSTANTIATE_CLASS(PrescribedDisplacements)
-#define DYNCONTACT_INSTANTIATE_HELD_DOFS(dim)                                                      \
-  template IndexSet held_dofs<dim>(const DoFHandler<dim>&, const FixedBoundary&);
-DYNCONTACT_FOR_EACH_DIMENSION(DYNCONTACT_INSTANTIATE_HELD_DOFS)
 } // namespace dyncontact

@@ -4,6 +4,7 @@
 #include <dyncontact/simulation/problem_fingerprint.h>
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/grid_tools.h>
@@ -15,6 +16,16 @@ namespace dyncontact
 {
 namespace
 {
+/** The DoFs of the components `boundary` holds on its faces, this rank's (locally relevant). */
+template <int dim>
+IndexSet held_dofs(const DoFHandler<dim>& dof_handler, const FixedBoundary& boundary)
+{
+  ComponentMask mask(dim, false);
+  for (const unsigned int component : boundary.components)
+    mask.set(component, true);
+  return DoFTools::extract_boundary_dofs(dof_handler, mask, {boundary.boundary});
+}
+
 template <int dim>
 void create_mesh(ProblemModel<dim>& model, parallel::shared::Triangulation<dim>& triangulation)
 {
@@ -60,9 +71,12 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   const std::vector<types::global_dof_index> axis_dofs =
       join_over_ranks(MPI_COMM_WORLD, rank_fixed_dofs);
   const std::vector<FixedBoundary> fixed_boundaries = model.fixed_boundaries();
+  std::vector<IndexSet> held;
   for (const FixedBoundary& boundary : fixed_boundaries)
-    for (const auto dof : held_dofs(dof_handler, boundary))
-      rank_fixed_dofs.push_back(dof);
+  {
+    held.push_back(held_dofs(dof_handler, boundary));
+    rank_fixed_dofs.insert(rank_fixed_dofs.end(), held.back().begin(), held.back().end());
+  }
   std::vector<types::global_dof_index> fixed_dofs =
       join_over_ranks(MPI_COMM_WORLD, rank_fixed_dofs);
   std::sort(fixed_dofs.begin(), fixed_dofs.end());
@@ -74,7 +88,7 @@ BodyDiscretization<dim>::BodyDiscretization(ProblemModel<dim>& model)
   }
   constraints.close();
   prescribed = std::make_unique<PrescribedDisplacements<dim>>(
-      dof_handler, *nodes, fixed_boundaries, axis_dofs);
+      dof_handler, *nodes, fixed_boundaries, held, axis_dofs);
   bodies = std::make_unique<ElasticBodies<dim>>(
       dof_handler, mapping, *kinematics, model.body_materials(), &constraints);
   loads = std::make_unique<ExternalLoads<dim>>(

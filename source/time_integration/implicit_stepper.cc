@@ -94,15 +94,15 @@ unsigned int ImplicitStepper<dim>::solve(const StepState& before,
     old_balance_net_force -= load_at_balance;
   }
   // Dirichlet boundaries: their DoFs are fixed (Newton never updates them), so they take g(t_{n+1})
-  // in the initial guess u~ + increment and in the configuration Newton restarts from.
+  // in the configuration Newton restarts from and in the initial guess u~ + increment.
   DistributedVector restart_configuration = before.displacement;
   prescribed.set_displacement(time, restart_configuration);
-  prescribed.set_displacement(time, increment);
   for_each_owned_row(increment,
                      [&](const types::global_dof_index i, const unsigned int j)
                      {
                        if (is_fixed_dof[i])
-                         increment.local_element(j) -= predictor.local_element(j);
+                         increment.local_element(j) =
+                             restart_configuration.local_element(j) - predictor.local_element(j);
                      });
   const auto report =
       solver.solve(predictor,

@@ -10,15 +10,10 @@
 #include <deal.II/dofs/dof_handler.h>
 
 #include <memory>
-#include <string>
 #include <vector>
 
 namespace dyncontact
 {
-/** The DoFs of the components `boundary` holds on its faces, this rank's (locally relevant). */
-template <int dim>
-IndexSet held_dofs(const DoFHandler<dim>& dof_handler, const FixedBoundary& boundary);
-
 /**
  * The displacement components that Dirichlet boundaries prescribe, u_i = g_i(X, t) at the nodes of
  * their faces (FixedBoundary with a displacement; X the reference position), on this rank's owned
@@ -37,14 +32,16 @@ class PrescribedDisplacements
 {
 public:
   /**
-   * The entries of `boundaries` with a displacement, less `zero_dofs` (the DoFs held at zero
-   * besides the boundaries', every rank's). Throws InputError naming the first boundary where g(X,
-   * 0) is not zero (the bodies start undeformed), to 1e-12 of the largest distance of its nodes
-   * from the origin.
+   * The entries of `boundaries` with a displacement, `held` their DoFs (one set per boundary, this
+   * rank's, as BodyDiscretization extracts them), less `zero_dofs` (the DoFs held at zero besides
+   * the boundaries', every rank's). Throws InputError, on every rank, naming the first boundary
+   * where g(X, 0) is not zero (the bodies start undeformed), to 1e-12 of the largest distance of
+   * its nodes from the origin.
    */
   PrescribedDisplacements(const DoFHandler<dim>& dof_handler,
                           const NodeIndex<dim>& nodes,
                           const std::vector<FixedBoundary>& boundaries,
+                          const std::vector<IndexSet>& held,
                           const std::vector<types::global_dof_index>& zero_dofs);
 
   /** Per DoF of the mesh (`n_dofs` entries): prescribed, on any rank. Collective. */
@@ -66,18 +63,13 @@ private:
     types::global_dof_index dof;
     unsigned int component;
     Point<dim> position;
-    unsigned int boundary; ///< index in `boundaries` (and `functions`)
+    unsigned int boundary; ///< index in `functions`
   };
 
   /** g_component(position, t) of `entry`. */
   double value(const Entry& entry, double t) const;
 
-  /** Throws, on every rank, `message(b)` for the lowest b that any rank flagged. Collective. */
-  template <class Message>
-  void throw_on_every_rank(unsigned int flagged, const Message& message) const;
-
   MPI_Comm communicator;
-  std::vector<FixedBoundary> boundaries;
   /// per boundary: its g (null for those held at zero)
   std::vector<std::shared_ptr<Functions::ParsedFunction<dim>>> functions;
   std::vector<Entry> entries;

@@ -46,9 +46,10 @@ struct SupportParameters
  * slowly for a quasi-static load). Subsection `Boundary/Dirichlet k`: the entries of a support and
  * the subsection `Displacement`, a function of x, y (, z) and t with dim components, of which the
  * chosen ones apply. The bodies start undeformed, so g(x, 0) must be zero (PrescribedDisplacements
- * checks it, and refuses a boundary through contact nodes); the velocity and acceleration of the
- * boundary start at dg/dt and d2g/dt2 at t = 0, and then follow the integrator's rates of u. Its
- * reaction counts as an external impulse and does work.
+ * checks it); the velocity and acceleration of the boundary start at dg/dt and d2g/dt2 at t = 0,
+ * and then follow the integrator's rates of u. Its reaction counts as an external impulse and does
+ * work; a contact pair whose force would act on it is refused when it closes
+ * (ContactConstraints::first_prescribed_active_pair()).
  */
 struct DirichletParameters
 {
