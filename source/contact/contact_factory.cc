@@ -87,11 +87,6 @@ std::unique_ptr<ContactGeometry<dim>> surface_geometry(const ContactDescription<
   for (const auto& surfaces : description.surface_pairs)
     try
     {
-      // Not yet: the tangential rows of mortar's weighted gaps.
-      if (surfaces.friction_coefficient.value_or(parameters.friction_coefficient) > 0. &&
-          parameters.discretization == ContactDiscretization::mortar)
-        throw InputError("friction is not implemented yet for Contact/discretization = mortar: "
-                         "set its friction coefficient to 0, or use node-to-segment contact.");
       members.push_back(surface_contact(surfaces, dof_handler, kinematics, nodes, parameters));
       add_coefficients(surfaces.friction_coefficient);
     }

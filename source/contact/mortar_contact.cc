@@ -113,13 +113,13 @@ MortarContact<dim>::MortarContact(const ContactSurface<dim>& slave_surface,
     faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   }
 
-  const std::vector<bool> mortar = apply_mortar_weights(
+  mortar_pairs = apply_mortar_weights(
       slave_surface.reference_positions(), master_surface.reference_positions(), candidate_pairs);
   for (unsigned int k = 0; k < candidate_pairs.size(); ++k)
   {
     ContactPair<dim>& pair = candidate_pairs[k];
     // The node's own position, not the point node-to-segment contact may have moved it onto.
-    if (mortar[k])
+    if (mortar_pairs[k])
       pair.slave.position = slave_surface.nodes()[point_projection.slave_node(k)].position;
     // As node-to-segment contact: touching bodies start closed, overlapping ones are refused.
     const double gap = pair.reference_gap();
@@ -238,6 +238,17 @@ void MortarContact<dim>::integrate_face(const unsigned int face,
 }
 
 template <int dim>
+bool MortarContact<dim>::MortarRow::defined(const double lumped_area) const
+{
+  // Written so that NaN integrals (a collapsed face) keep the projected point too.
+  bool finite = dual_area >= least_dual_area_fraction * lumped_area &&
+                covered_area >= least_coverage * dual_area;
+  for (const auto& master : master_integrals)
+    finite = finite && std::isfinite(master.second);
+  return finite;
+}
+
+template <int dim>
 std::vector<typename MortarContact<dim>::MortarRow>
 MortarContact<dim>::mortar_rows(const std::vector<Point<dim>>& slave_positions,
                                 const std::vector<Point<dim>>& master_positions) const
@@ -263,12 +274,7 @@ MortarContact<dim>::apply_mortar_weights(const std::vector<Point<dim>>& slave_po
   {
     const unsigned int node = point_projection.slave_node(k);
     const MortarRow& row    = rows[node];
-    // Written so that NaN integrals (a collapsed face) keep the projected point too.
-    bool defined = row.dual_area >= least_dual_area_fraction * lumped[node] &&
-                   row.covered_area >= least_coverage * row.dual_area;
-    for (const auto& master : row.master_integrals)
-      defined = defined && std::isfinite(master.second);
-    if (!defined)
+    if (!row.defined(lumped[node]))
       continue;
     pairs[k].masters.clear();
     for (const auto& [master, integral] : row.master_integrals)
@@ -283,9 +289,9 @@ void MortarContact<dim>::update_pairs(const BorderDisplacement<dim>& displacemen
                                       std::vector<ContactPair<dim>>& pairs) const
 {
   point_projection.update_pairs(displacement, pairs);
-  apply_mortar_weights(slave_surface().current_positions(displacement),
-                       master_surface().current_positions(displacement),
-                       pairs);
+  mortar_pairs = apply_mortar_weights(slave_surface().current_positions(displacement),
+                                      master_surface().current_positions(displacement),
+                                      pairs);
 }
 
 template <int dim>
@@ -294,10 +300,11 @@ void MortarContact<dim>::update_master_points(const BorderDisplacement<dim>& dis
                                               const bool move_normals) const
 {
   // The mortar rows first: the projection is needed only where they are not defined.
-  std::vector<bool> projected =
-      apply_mortar_weights(slave_surface().current_positions(displacement),
-                           master_surface().current_positions(displacement),
-                           pairs);
+  if (move_normals)
+    mortar_pairs = apply_mortar_weights(slave_surface().current_positions(displacement),
+                                        master_surface().current_positions(displacement),
+                                        pairs);
+  std::vector<bool> projected = mortar_pairs;
   projected.flip();
   point_projection.update_master_points(displacement, pairs, move_normals, projected);
 }
@@ -327,7 +334,18 @@ std::vector<double>
 MortarContact<dim>::contact_pressures(const BorderDisplacement<dim>& displacement,
                                       const std::vector<double>& multipliers) const
 {
-  return point_projection.contact_pressures(displacement, multipliers);
+  std::vector<double> pressures = point_projection.contact_pressures(displacement, multipliers);
+  const auto slave_positions    = slave_surface().current_positions(displacement);
+  const std::vector<MortarRow> rows =
+      mortar_rows(slave_positions, master_surface().current_positions(displacement));
+  const std::vector<double> lumped = slave_surface().lumped_areas(slave_positions);
+  for (unsigned int k = 0; k < pressures.size(); ++k)
+  {
+    const unsigned int node = point_projection.slave_node(k);
+    if (rows[node].defined(lumped[node]))
+      pressures[k] = multipliers[k] / rows[node].dual_area;
+  }
+  return pressures;
 }
 
 // 2D only, as NodeToSegmentContact: its face patch is a 3-node line.

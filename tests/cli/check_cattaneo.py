@@ -22,23 +22,23 @@ contact_pressure_t<T>.csv of the run's tangential phase:
   measured: a and c, the largest |x - x0| of an active and of a stuck slave node.
 Checks, at the times whose Q / (MU P) is nearest 0.3, 0.6 and 0.9 (each within 0.05 of it):
   - a and c within one cell edge H of Hertz and Cattaneo (the contact's edge and the stick-slip
-    boundary fall between two nodes, H / 2 apart on the Q2 faces; measured within 0.23 H for a
-    and 0.57 H for c on the cylinders at H = 0.1 a, 0.27 H and 0.13 H on the sphere at H = a / 4,
+    boundary fall between two nodes, H / 2 apart on the Q2 faces; measured within 0.21 H for a
+    and 0.21 H for c on the cylinders at H = a / 9, 0.27 H and 0.13 H on the sphere at H = a / 4,
     0.03 H and 0.29 H at H = a / 3; at that coarse a mesh only the 0.9 point tells Cattaneo's c
     from no slip zone at all);
   - Coulomb's law at the nodes: a sliding node's tangential force is MU times its normal one to
     1e-5 of MU P / (number of active nodes), a stuck node's at most that (the slip rows converge
-    to Newton's tolerance: measured 5e-15 on the cylinders, where a 2D slip row is linear once
+    to Newton's tolerance: measured 7e-15 on the cylinders, where a 2D slip row is linear once
     its direction is known, and 8e-7 on the sphere, whose 3D slip direction is iterated);
-and, printed and written but not checked, the shear traction in the slip zone (the consistent
-traction of the nodal forces) against MU p0 sqrt(1 - (x - x0)^2 / a^2), of MU p0, and the pressure
-against Hertz's, of p0. They are not within the 3 % the issue asks for: the node-to-segment
-contact pressure of quadratic faces on non-matching meshes departs from Hertz node by node,
-symmetrically about the centre, by 14 % of p0 on the cylinders' mesh also without friction (34 %
-at half the cell size: it does not converge, the known failure of node-to-segment contact to pass
-the patch test; mortar's is within 4 % inside 0.9 a there), and the slip zone's shear is MU times
-that pressure (to 2-6 % of MU p0: the consistent traction couples each node to its neighbours,
-stuck ones too). Measured 0.145 MU p0 on the cylinders, 0.2 on the sphere.
+  - cylinders only: the shear traction (the run's shear column: on mortar pairs the dual
+    multiplier's nodal value) of the sliding nodes in the slip zone within 3 % of MU p0 of
+    MU p0 sqrt(1 - (x - x0)^2 / a^2), the issue's figure, at every node farther than H from
+    Hertz's edge (measured 0.75 % at 39 nodes with mortar at H = a / 9; node-to-segment contact
+    fails it, its pressure departing from Hertz's node by node, 14 % of p0 at H = a / 10 and 34 %
+    at a / 20 without friction too: the patch test); within H of the edge, where the edge falls
+    inside the last cell and Hertz's pressure drops as a square root no Q2 field follows, within
+    10 % (measured 5.1 %, the frictionless pressure's own error there); and at least 10 nodes so
+    checked over the three times. The sphere's (node-to-surface) are printed: 0.2 MU p0.
 Checked over the whole tangential phase: P constant to 0.5 % (measured 0.07 %); gross slip reached,
 where Q = MU P then follows from the nodal law (a consistency check of the sums, to 1e-5;
 measured 2e-16 and 1e-7); the kinetic energy at most 1e-3 of the strain energy (quasi-static:
@@ -61,6 +61,7 @@ sphere = "--sphere" in sys.argv[7:]
 e_star = E / (1.0 - nu * nu) if sphere else E / (2.0 * (1.0 - nu * nu))
 symmetry = 2.0 if sphere else 1.0  # the half model's forces are half the whole body's
 checks = Checks()
+edge_band = 1.0  # cell edges H from the contact's edge: the slip zone's band held to 10 %
 
 
 def tangential(row):
@@ -141,8 +142,13 @@ for name in sorted(glob.glob(f"{directory}/contact_pressure_t*.csv"), key=time_o
     a_measured = max(distance(r) for r in active)
     c_measured = max((distance(r) for r in stuck), default=0.0)
     in_slip_zone = [r for r in sliding if c < distance(r) < a]
-    shear_error = max((abs(sign * r["shear_x"] - mu * p0 * math.sqrt(1.0 - (distance(r) / a) ** 2))
-                       / (mu * p0) for r in in_slip_zone), default=0.0)
+
+    def shear_error(zone):
+        return max((abs(sign * r["shear_x"] - mu * p0 * math.sqrt(1.0 - (distance(r) / a) ** 2))
+                    / (mu * p0) for r in zone), default=0.0)
+
+    inside = [r for r in in_slip_zone if distance(r) <= a - edge_band * h]
+    edge = [r for r in in_slip_zone if distance(r) > a - edge_band * h]
     pressure_error = max(abs(r["pressure"] - p0 * math.sqrt(max(0.0, 1.0 - (distance(r) / a) ** 2)))
                          / p0 for r in active)
     force_scale = mu * P / len(active)
@@ -155,7 +161,9 @@ for name in sorted(glob.glob(f"{directory}/contact_pressure_t*.csv"), key=time_o
                  r["sliding"]) for r in active]
     samples.append(dict(time=t, P=P, Q=Q, Q_over_muP=ratio, a_hertz=a, a_measured=a_measured,
                         c_cattaneo=c, c_measured=c_measured, cell_edge=h, active_nodes=len(active),
-                        sliding_nodes=len(sliding), shear_error_slip_zone=shear_error,
+                        sliding_nodes=len(sliding), slip_zone_nodes_inside=len(inside),
+                        shear_error_slip_zone=shear_error(inside),
+                        shear_error_edge_band=shear_error(edge),
                         pressure_error=pressure_error, coulomb_law_sliding=law_sliding,
                         coulomb_law_stuck=law_stuck,
                         kinetic_energy_fraction=kinetic_fraction.get(t, float("nan"))))
@@ -178,9 +186,17 @@ for target in (0.3, 0.6, 0.9):
                  abs(s["a_measured"] - s["a_hertz"]) / h, 1.0)
     checks.bound(f"{label}: |c - c_Cattaneo| / H ({s['c_measured']:.4f} vs {s['c_cattaneo']:.4f})",
                  abs(s["c_measured"] - s["c_cattaneo"]) / h, 1.0)
-    print(f"  (not checked: the slip zone's shear vs mu p_Hertz, of mu p0: "
-          f"{s['shear_error_slip_zone']:.3f}; the pressure vs Hertz, of p0: "
-          f"{s['pressure_error']:.3f}; kinetic / strain energy {s['kinetic_energy_fraction']:.2g})")
+    shear = (f"{label}: slip zone beyond {edge_band:g} H of the edge ({s['slip_zone_nodes_inside']:g}"
+             f" nodes): |shear - mu p_Hertz| / (mu p0)")
+    edge_shear = f"{label}: slip zone's edge band: |shear - mu p_Hertz| / (mu p0)"
+    if sphere:
+        print(f"  (not checked: {shear} {s['shear_error_slip_zone']:.3f}, "
+              f"{edge_shear} {s['shear_error_edge_band']:.3f})")
+    else:
+        checks.bound(shear, s["shear_error_slip_zone"], 0.03)
+        checks.bound(edge_shear, s["shear_error_edge_band"], 0.10)
+    print(f"  (not checked: the pressure vs Hertz, of p0: {s['pressure_error']:.3f}; "
+          f"kinetic / strain energy {s['kinetic_energy_fraction']:.2g})")
     checks.bound(f"{label}: sliding nodes |lambda_t| - mu lambda_n", s["coulomb_law_sliding"], 1e-5)
     checks.bound(f"{label}: stuck nodes |lambda_t| - mu lambda_n", s["coulomb_law_stuck"], 1e-5)
 plot(chosen)
@@ -193,6 +209,9 @@ if gross:
     # Once every node slides, Q = mu P follows from the nodal law: a consistency check of the sums.
     checks.bound("gross slip, every node sliding: |Q / (mu P) - 1|",
                  max(abs(s["Q_over_muP"] - 1.0) for s in gross), 1e-5)
+if not sphere:
+    checks.bound("slip zone nodes beyond the edge band at the three times",
+                 sum(s["slip_zone_nodes_inside"] for s in chosen), 10, above=True)
 checks.bound("kinetic / strain energy in the tangential phase",
              max(f for t, f in kinetic_fraction.items() if t >= samples[0]["time"]), 1e-3)
 checks.finish()

@@ -47,9 +47,9 @@ namespace dyncontact
  * normalized by the covered part), or whose integrals are not finite (a collapsed face). A mortar
  * pair's slave position is the node's own (not node-to-segment's, which may have been moved onto
  * its projected point), moved along the normal by the mortar reference gap if that is within the
- * touching tolerance. Within a time step the
- * pair's normal is held at u_n as in node-to-segment contact; the weights follow the Newton
- * iterates (update_master_points()), their change with u left out of the rows.
+ * touching tolerance. Within a time step the pair's normal is held at u_n as in node-to-segment
+ * contact; the weights follow the first Newton iterates (update_master_points()), their change
+ * with u left out of the rows.
  *
  * Only 2D meshes of Q2 elements.
  */
@@ -82,8 +82,13 @@ public:
                     std::vector<ContactPair<dim>>& pairs) const override;
 
   /**
-   * The mortar masters and weights at `displacement`, each mortar pair's normal kept; pairs
-   * without mortar rows as NodeToSegmentContact::update_master_points().
+   * With `move_normals`, the mortar masters and weights at `displacement`, each mortar pair's
+   * normal kept; without, the mortar pairs as they are (their weights, like node-to-segment's
+   * normals, move over a step's first Newton updates only: the rows leave out the weights' change
+   * with u, and with friction an update past that point could not lower the residual further, so
+   * that Newton stalled at 40 times its tolerance on the Cattaneo cylinders). Pairs without
+   * mortar rows (at the last update that moved the weights) as
+   * NodeToSegmentContact::update_master_points().
    */
   void update_master_points(const BorderDisplacement<dim>& displacement,
                             std::vector<ContactPair<dim>>& pairs,
@@ -100,7 +105,17 @@ public:
   /** The nodes of both surfaces. */
   std::vector<Node<dim>> surface_nodes() const override;
 
-  /** ContactSurface::consistent_pressures() of the slave surface at the pairs' slave nodes. */
+  /**
+   * The mortar method's own traction at the pairs with a mortar row: the coefficient
+   * z_j = lambda_j / D_j of slave node j's dual shape function psi_j in the multiplier field
+   * sum_j z_j psi_j, whose work on N_j is lambda_j (int psi_j N_k = delta_jk D_j). Local to the
+   * node, so that a sliding node's shear traction is mu times its pressure (Coulomb's law holds
+   * nodally) and a stuck neighbour does not pull it off: the consistent recovery of
+   * ContactSurface::consistent_pressures() couples each node to the nodes of its faces, and put
+   * the Cattaneo cylinders' shear 2-5 % of mu p0 off mu times their own pressure next to the stick
+   * zone. The pairs without mortar rows (the axis vertex of an axisymmetric surface, whose D_j is
+   * zero): that consistent recovery.
+   */
   std::vector<double> contact_pressures(const BorderDisplacement<dim>& displacement,
                                         const std::vector<double>& multipliers) const override;
 
@@ -111,6 +126,12 @@ private:
     double dual_area    = 0.;
     double covered_area = 0.;
     std::map<unsigned int, double> master_integrals;
+
+    /**
+     * Whether the row defines the pair (class documentation): D_j at least 1/10 of the node's
+     * lumped area `lumped_area`, at least half of it covered, every integral finite.
+     */
+    bool defined(double lumped_area) const;
   };
 
   NodeToSegmentContact<dim> point_projection;
@@ -118,6 +139,11 @@ private:
   /** Per slave face: the master faces it is integrated against (its nodes' candidate faces). */
   std::vector<std::vector<unsigned int>> master_faces_of_slave_face;
   std::vector<ContactPair<dim>> candidate_pairs;
+  /**
+   * Per pair, whether its mortar row was defined at the last configuration the weights were set
+   * at (update_pairs(), or update_master_points() with `move_normals`).
+   */
+  mutable std::vector<bool> mortar_pairs;
 
   /** The surfaces, node-to-segment contact's (one copy). */
   const ContactSurface<dim>& slave_surface() const { return point_projection.slave(); }
