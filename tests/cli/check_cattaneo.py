@@ -102,8 +102,10 @@ def plot(chosen):
                        f" (Cattaneo {c:.3f})", fontsize=9)
         axis.grid(alpha=0.3)
     axes[0].set_ylabel("traction / p0, shear / (mu p0)")
-    axes[0].legend(fontsize=7, loc="lower center")
-    figure.tight_layout()
+    # Below the panels: inside, it hid the stick zone's shear.
+    handles, labels = axes[0].get_legend_handles_labels()
+    figure.legend(handles, labels, fontsize=8, loc="lower center", ncol=len(labels))
+    figure.tight_layout(rect=(0, 0.07, 1, 1))
     figure.savefig(f"{directory}/cattaneo.png", dpi=110)
     plt.close(figure)
 
