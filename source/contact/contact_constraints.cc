@@ -298,13 +298,18 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
       tensile_pairs.push_back(k);
   // On a surface, a tensile nodal force inside compressed surroundings (the zero-area axis node of
   // an axisymmetric Q2 surface) is not a tensile traction: such a pair stays closed. Not so for a
-  // penalty, whose tensile force means an open gap: keeping that pair would glue it.
+  // penalty, whose tensile force means an open gap: keeping that pair would glue it. Nor for a
+  // pair carrying friction: Coulomb's nodal law has no stick branch at a tensile normal force, and
+  // its slip branch would pull along the slip; kept closed, the pair has a solution in neither,
+  // and Newton alternated between them (a side-pushed block on Newmark at dt = 0.05: one corner
+  // pair stuck at lambda_n = -1.4e-3 and slid at +2.7e-2 for 25 solves, exit 3 after 10 cuts).
   const bool check_pressure =
       !tensile_pairs.empty() && formulation == ContactFormulation::lagrange_multiplier;
   const std::vector<double> pressures =
       check_pressure ? contact_pressures(displacement) : std::vector<double>();
   for (const unsigned int k : tensile_pairs)
-    if (pressures.empty() || !(pressures[k] > 0.)) // a zero or undefined pressure releases too
+    // A zero or undefined pressure releases too.
+    if (pressures.empty() || !(pressures[k] > 0.) || !friction.friction_directions(k).empty())
     {
       active[k] = false;
       for (unsigned int c = 0; c < block.n_components(k); ++c)
