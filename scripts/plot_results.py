@@ -39,7 +39,9 @@ Head-on sphere impacts (hertz.csv):
     p(r) = p0 sqrt(1 - r^2/a^2), a = sqrt(R* d), p0 = 3 F / (2 pi a^2), with F(T), d(T) from
     hertz.csv. A negative recovered pressure at an active pair is explained in a note: the
     pressure is recovered from the pairs' nodal forces by the consistent surface mass matrix of the
-    contact zone's Q2 faces, which undershoots where the pressure drops to zero inside an element;
+    contact zone's Q2 faces, which undershoots where the pressure drops to zero inside an element
+    (node-to-node and node-to-segment pairs; a mortar pair's pressure lambda_j / D_j has the sign
+    of its force);
   - deformed_contact_t<T>.png for every profile time T at which pairs are active (needs cells.csv):
     left, the deformed cells of the bodies near the contact, r within 3 contact radii (the larger
     of Hertz's and the FE's), mirrored about the axis, with z drawn S times enlarged about the
@@ -807,7 +809,7 @@ def negative_pressure(profiles):
     is one line: the value, where, the pair's nodal force and why it is not a tension (the
     pressure is recovered from the nodal forces by the consistent surface mass matrix of the
     contact zone's Q2 faces, ContactSurface::consistent_pressures(), which undershoots where the
-    pressure falls to zero inside an element)."""
+    pressure falls to zero inside an element; not a mortar pair's, lambda_j / D_j)."""
     worst = None
     for time, table, _ in profiles:
         active = table['active'] > 0

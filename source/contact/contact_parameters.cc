@@ -177,7 +177,7 @@ void ContactParameters::declare_parameters(ParameterHandler& prm, const unsigned
       "slides; stick and slip are decided inside Newton (a semismooth Newton on the NCP function "
       "of Hueber, Stadler & Wohlmuth 2008; doc/method.md, section 7). Meshes only (2D: in the "
       "r-z or x-y plane; 3D: both tangential directions): rigid planes, node-to-node, "
-      "node-to-segment (not mortar); with Contact/dynamics = none, "
+      "node-to-segment and mortar pairs; with Contact/dynamics = none, "
       "mass-redistribution or taylor-papadopoulos (whose rate constraints hold a stuck pair's "
       "whole relative velocity and acceleration). history.csv then has the columns "
       "sliding_pairs, frictional_dissipation, stick_velocity_jump and stick_acceleration_jump "

@@ -241,11 +241,11 @@ template <int dim>
 bool MortarContact<dim>::MortarRow::defined(const double lumped_area) const
 {
   // Written so that NaN integrals (a collapsed face) keep the projected point too.
-  bool finite = dual_area >= least_dual_area_fraction * lumped_area &&
-                covered_area >= least_coverage * dual_area;
+  bool defined = dual_area >= least_dual_area_fraction * lumped_area &&
+                 covered_area >= least_coverage * dual_area;
   for (const auto& master : master_integrals)
-    finite = finite && std::isfinite(master.second);
-  return finite;
+    defined = defined && std::isfinite(master.second);
+  return defined;
 }
 
 template <int dim>
@@ -304,6 +304,7 @@ void MortarContact<dim>::update_master_points(const BorderDisplacement<dim>& dis
     mortar_pairs = apply_mortar_weights(slave_surface().current_positions(displacement),
                                         master_surface().current_positions(displacement),
                                         pairs);
+  AssertDimension(mortar_pairs.size(), pairs.size());
   std::vector<bool> projected = mortar_pairs;
   projected.flip();
   point_projection.update_master_points(displacement, pairs, move_normals, projected);

@@ -14,9 +14,10 @@ radius 0 dissipates; the energy guard's own test).
 
 --bouncing: the block on a step that resolves its vertical vibration (Newmark at dt = 0.05: placed
 unloaded under its weight, it bounces, and the push rocks it; its pairs open and close, and it
-leaves the plane at times), so N is not its weight and MU N SLIP no bound: D at least 0.1 MU N SLIP
-(friction acted; measured 0.87) and never decreasing by more than 1e-6 of itself in a step, and
-the energy balance as above.
+leaves the plane at times), so N is not its weight at every moment and MU N SLIP no exact value:
+its mean over the run is the weight, less the flights and the corner's share, so D at least
+0.5 MU N SLIP (measured 0.87); D never decreasing by more than 1e-6 of itself in a step; and the
+energy balance as above (Newmark with gamma > 1/2 dissipates as well).
 """
 import os
 import sys
@@ -32,7 +33,7 @@ last = rows[-1]
 work = last["external_work"]
 if "--bouncing" in sys.argv[5:]:
     checks.bound("D / (mu N slip), at least", last["frictional_dissipation"] / (mu * normal_force * slip),
-                 0.1, above=True)
+                 0.5, above=True)
     # A stuck pair's slip is zero to Newton's tolerance only, and so is its work (measured 1.2e-7).
     checks.bound("largest decrease of D in a step / D", max(
         a["frictional_dissipation"] - b["frictional_dissipation"] for a, b in zip(rows, rows[1:]))

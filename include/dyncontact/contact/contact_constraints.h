@@ -287,9 +287,12 @@ public:
    * except, for surface pairs with Lagrange multipliers, those whose contact pressure
    * (contact_pressures()) is still compressive: a node whose consistent share of a compressive
    * pressure is zero or negative (the axis node of an axisymmetric Q2 surface has zero tributary
-   * area) may carry a slightly tensile multiplier while its surroundings are pressed together.
-   * Then decides stick or slip for the active pairs with friction (CoulombFriction::update_states()
-   * with `force_tolerance`). Returns whether anything changed.
+   * area) may carry a slightly tensile multiplier while its surroundings are pressed together;
+   * not a pair that carries friction (CoulombFriction::friction_directions() not empty), which
+   * leaves at a tensile multiplier whatever its pressure (Coulomb's nodal law has no stick branch
+   * there: doc/method.md section 7, "What carries friction"). Then decides stick or slip for the
+   * active pairs with friction (CoulombFriction::update_states() with `force_tolerance`). Returns
+   * whether anything changed.
    */
   bool update_active_set(const Vector<double>& displacement,
                          double gap_tolerance,
@@ -325,8 +328,8 @@ public:
   }
 
   /**
-   * Component `component` of the shear traction at every pair [force/area], consistent with the
-   * tangential forces (tangential_force()) as contact_pressures() is with the normal ones, on the
+   * Component `component` of the shear traction at every pair [force/area], recovered from the
+   * tangential forces (tangential_force()) as contact_pressures() is from the normal ones, on the
    * support of that component's forces: where the component vanishes at a node of the contact
    * zone (a symmetry plane's normal direction) its zone is smaller than the pressure's. Empty for
    * pairs with fixed normals.

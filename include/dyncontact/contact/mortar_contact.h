@@ -86,9 +86,12 @@ public:
    * normal kept; without, the mortar pairs as they are (their weights, like node-to-segment's
    * normals, move over a step's first Newton updates only: the rows leave out the weights' change
    * with u, and with friction an update past that point could not lower the residual further, so
-   * that Newton stalled at 40 times its tolerance on the Cattaneo cylinders). Pairs without
-   * mortar rows (at the last update that moved the weights) as
-   * NodeToSegmentContact::update_master_points().
+   * that Newton stalled at 40 times its tolerance on the Cattaneo cylinders). A contact-dynamics
+   * treatment that holds the normals over the step (ContactDynamics::turns_normals() false:
+   * contact-stabilized, velocity-update) never passes `move_normals`, and holds the weights of
+   * u_n too: its energy argument holds the constraint gradient. Pairs without mortar rows (at the
+   * last update that moved the weights) as NodeToSegmentContact::update_master_points(). The
+   * pairs must be those the last update_pairs() set (one ContactConstraints per geometry).
    */
   void update_master_points(const BorderDisplacement<dim>& displacement,
                             std::vector<ContactPair<dim>>& pairs,
@@ -106,7 +109,8 @@ public:
   std::vector<Node<dim>> surface_nodes() const override;
 
   /**
-   * The mortar method's own traction at the pairs with a mortar row: the coefficient
+   * The mortar method's own traction at the pairs whose mortar row is defined at `displacement`:
+   * the coefficient
    * z_j = lambda_j / D_j of slave node j's dual shape function psi_j in the multiplier field
    * sum_j z_j psi_j, whose work on N_j is lambda_j (int psi_j N_k = delta_jk D_j). Local to the
    * node, so that a sliding node's shear traction is mu times its pressure (Coulomb's law holds

@@ -76,10 +76,12 @@ public:
     Point<dim> position; ///< its current position
     double gap;
     double multiplier; ///< the pair's nodal contact force (compression positive), zero if inactive
-    double pressure;   ///< consistent contact pressure, see NodeToNodeContact::contact_pressures()
+    double pressure; ///< contact pressure, ContactGeometry::contact_pressures() (mortar: lambda_j /
+                     ///< D_j)
     bool active;
-    /// with friction: the friction force on the slave node [force] and the consistent shear
-    /// traction on body A [force/area] (ContactConstraints::shear_tractions()), zero without
+    /// with friction: the friction force on the slave node [force] and the shear traction on
+    /// body A [force/area], recovered as `pressure` (ContactConstraints::shear_tractions()), zero
+    /// without
     Tensor<1, dim> tangential_force, shear;
     bool sliding; ///< with friction: the pair slides (ContactConstraints::is_sliding())
   };
