@@ -8,7 +8,12 @@ Columns that are round-off or tolerance-level by nature are scaled by the quanti
 (SCALE_COLUMN), or by themselves where they are larger: the force imbalance by the contact force,
 the penetration by the displacement of the contact pole, the normal velocity and acceleration
 jumps by the pole's velocity and acceleration (a jump the contact-dynamics treatment leaves, as
-mass redistribution does at the three spheres' two contacts, can exceed them). A body's momentum
+mass redistribution does at the three spheres' two contacts, can exceed them), the strain energy
+by the total energy, as the energy guard weighs it: W(F) sums first-order terms that cancel, so
+its round-off is 1e-16 over the strain, 1e-11 where the bodies strain by 1e-5 (the oblique
+spheres on 2 ranks: 4.9e-11 to 7.2e-11 of its own maximum against one rank, 1.9e-11 to 2.7e-11
+of the total energy, varying from run to run: runs on several ranks are not repeatable bit for
+bit, their contact forces differing by 2e-14 between two runs). A body's momentum
 and impulse are scaled by the largest momentum or impulse of any body (MOMENTUM_COLUMNS): a body
 at rest by symmetry (the middle of three spheres) has a momentum of round-off size, which is no
 scale for its own differences. The angular momentum components are scaled by the largest of
@@ -23,6 +28,7 @@ SCALE_COLUMN = {
     "max_penetration": "u_tip_1",
     "velocity_jump": "v_tip_1",
     "acceleration_jump": "a_tip_1",
+    "strain_energy": "total_energy",
 }
 
 MOMENTUM_COLUMNS = ("momentum_", "impulse_")
