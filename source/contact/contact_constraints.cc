@@ -303,13 +303,18 @@ bool ContactConstraints<dim>::update_active_set(const Vector<double>& displaceme
   // its slip branch would pull along the slip; kept closed, the pair has a solution in neither,
   // and Newton alternated between them (a side-pushed block on Newmark at dt = 0.05: one corner
   // pair stuck at lambda_n = -1.4e-3 and slid at +2.7e-2 for 25 solves, exit 3 after 10 cuts).
-  const bool check_pressure =
-      !tensile_pairs.empty() && formulation == ContactFormulation::lagrange_multiplier;
+  const auto pressure_decides = [&](const unsigned int k)
+  {
+    return formulation == ContactFormulation::lagrange_multiplier &&
+           friction.friction_directions(k).empty();
+  };
   const std::vector<double> pressures =
-      check_pressure ? contact_pressures(displacement) : std::vector<double>();
+      std::any_of(tensile_pairs.begin(), tensile_pairs.end(), pressure_decides)
+          ? contact_pressures(displacement)
+          : std::vector<double>();
   for (const unsigned int k : tensile_pairs)
-    // A zero or undefined pressure releases too.
-    if (pressures.empty() || !(pressures[k] > 0.) || !friction.friction_directions(k).empty())
+    // A zero or undefined pressure releases too, and so does a pair without one (fixed normals).
+    if (!pressure_decides(k) || pressures.empty() || !(pressures[k] > 0.))
     {
       active[k] = false;
       for (unsigned int c = 0; c < block.n_components(k); ++c)

@@ -335,16 +335,27 @@ std::vector<double>
 MortarContact<dim>::contact_pressures(const BorderDisplacement<dim>& displacement,
                                       const std::vector<double>& multipliers) const
 {
-  std::vector<double> pressures = point_projection.contact_pressures(displacement, multipliers);
-  const auto slave_positions    = slave_surface().current_positions(displacement);
+  const auto slave_positions = slave_surface().current_positions(displacement);
   const std::vector<MortarRow> rows =
       mortar_rows(slave_positions, master_surface().current_positions(displacement));
   const std::vector<double> lumped = slave_surface().lumped_areas(slave_positions);
+  std::vector<double> pressures(multipliers.size());
+  std::vector<unsigned int> projected; // the pairs without a mortar row
   for (unsigned int k = 0; k < pressures.size(); ++k)
   {
     const unsigned int node = point_projection.slave_node(k);
     if (rows[node].defined(lumped[node]))
       pressures[k] = multipliers[k] / rows[node].dual_area;
+    else
+      projected.push_back(k);
+  }
+  // The consistent recovery's zone solve only where it is used.
+  if (!projected.empty())
+  {
+    const std::vector<double> recovered =
+        point_projection.contact_pressures(displacement, multipliers);
+    for (const unsigned int k : projected)
+      pressures[k] = recovered[k];
   }
   return pressures;
 }

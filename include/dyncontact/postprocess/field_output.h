@@ -76,8 +76,8 @@ public:
     Point<dim> position; ///< its current position
     double gap;
     double multiplier; ///< the pair's nodal contact force (compression positive), zero if inactive
-    double pressure; ///< contact pressure, ContactGeometry::contact_pressures() (mortar: lambda_j /
-                     ///< D_j)
+    /// contact pressure, ContactGeometry::contact_pressures() (mortar pairs: lambda_j / D_j)
+    double pressure;
     bool active;
     /// with friction: the friction force on the slave node [force] and the shear traction on
     /// body A [force/area], recovered as `pressure` (ContactConstraints::shear_tractions()), zero
